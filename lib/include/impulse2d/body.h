@@ -1,0 +1,78 @@
+// Rigid bodies: mass from shape and density, state, and the forces accumulated for one step.
+#pragma once
+
+#include <string>
+
+#include "impulse2d/math.h"
+#include "impulse2d/shape.h"
+
+namespace impulse2d {
+
+/// Static bodies never move and have zero inverse mass and inertia; dynamic bodies integrate.
+enum class BodyType { Static, Dynamic };
+
+struct Body {
+  std::string name;
+  BodyType type = BodyType::Dynamic;
+  Shape shape;
+
+  double friction = 0.5;     ///< coefficient of friction of the material (mixed per contact)
+  double restitution = 0.0;  ///< coefficient of restitution of the material (mixed per contact)
+
+  double mass = 0.0;            ///< kg; 0 for static bodies
+  double inverseMass = 0.0;     ///< 1/kg; 0 for static bodies
+  double inertia = 0.0;         ///< kg m^2 about the centre of mass
+  double inverseInertia = 0.0;  ///< 0 for static bodies
+
+  Vec2 position = Vec2::Zero();  ///< m, world position of the centre of mass
+  double angle = 0.0;            ///< rad, counter-clockwise
+  Vec2 velocity = Vec2::Zero();  ///< m/s of the centre of mass
+  double angularVelocity = 0.0;  ///< rad/s, counter-clockwise
+
+  Vec2 force = Vec2::Zero();  ///< N, accumulated until the next step, then cleared
+  double torque = 0.0;        ///< N m, accumulated until the next step, then cleared
+
+  /// m/s^2. The linear acceleration (gravity plus force/mass) applied in the last velocity update:
+  /// what the micro-collision resolver removes from a resting contact's bounce (lecture 3.6).
+  Vec2 lastAcceleration = Vec2::Zero();
+
+  Mat2 rotation = Mat2::Identity();  ///< cached rotation(angle)
+  Aabb bounds;                       ///< cached world bounding box
+
+  bool isStatic() const { return type == BodyType::Static; }
+
+  /// Body-frame point -> world point.
+  Vec2 toWorld(const Vec2& local) const { return position + rotation * local; }
+  /// World point -> body-frame point.
+  Vec2 toLocal(const Vec2& world) const { return rotation.transpose() * (world - position); }
+  /// Velocity of the body's material at world point p.
+  Vec2 velocityAt(const Vec2& p) const {
+    return velocity + cross(angularVelocity, Vec2(p - position));
+  }
+
+  /// Applies an impulse (N s) at world point p: Δv = P/m, Δω = (r × P)/I.
+  void applyImpulse(const Vec2& impulse, const Vec2& p) {
+    velocity += inverseMass * impulse;
+    angularVelocity += inverseInertia * cross(Vec2(p - position), impulse);
+  }
+
+  /// Adds a force (N) acting at world point p for the next step.
+  void applyForce(const Vec2& f, const Vec2& p) {
+    force += f;
+    torque += cross(Vec2(p - position), f);
+  }
+
+  /// Recomputes the cached rotation and bounds after position or angle changed.
+  void updateCache();
+
+  double kineticEnergy() const;
+  /// Potential energy in the gravity field g: −m g·x.
+  double potentialEnergy(const Vec2& gravity) const;
+};
+
+/// A body of the given shape, type and density (kg/m^2), with mass and inertia computed from the
+/// shape; static bodies get zero inverse mass and inertia whatever the density.
+Body makeBody(const std::string& name, BodyType type, Shape shape, double density,
+              const Vec2& position, double angle);
+
+}  // namespace impulse2d

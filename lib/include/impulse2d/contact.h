@@ -1,0 +1,68 @@
+// Contact manifolds: where two bodies touch, and the impulses a solver applied there.
+//
+// THE SIGN CONVENTION (stated here once, used everywhere):
+// - A manifold joins body A and body B. Its normal n is a unit vector pointing from A to B.
+// - penetration d > 0 means the surfaces overlap by d along n; d < 0 is a gap of −d.
+// - An impulse λ along n is applied as +λn to B and −λn to A: λ > 0 pushes them apart.
+// - The relative velocity at a contact is v = (vB + ωB × rB) − (vA + ωA × rA), r being the arm
+//   from each centre of mass to the contact point; its normal part vn = v·n is the separating
+//   velocity: vn < 0 closing (approaching), vn > 0 separating.
+// - The tangent is t = leftPerpendicular(n) (n turned +90°); a friction impulse λt acts as +λt t
+//   on B and −λt t on A, like the normal impulse.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "impulse2d/math.h"
+
+namespace impulse2d {
+
+/// Which features (edges, vertices) of the two shapes make a contact point. It stays the same
+/// from step to step while the same features touch, so impulses can be carried over by it.
+using FeatureId = std::uint32_t;
+
+/// Builds a feature id from the reference edge, the incident edge, the incident vertex and
+/// whether A and B were swapped to find the reference face.
+inline FeatureId makeFeatureId(int referenceEdge, int incidentEdge, int incidentVertex,
+                               bool flipped) {
+  return static_cast<FeatureId>((referenceEdge & 0xff) | (incidentEdge & 0xff) << 8 |
+                                (incidentVertex & 0xff) << 16 | (flipped ? 1u : 0u) << 24);
+}
+
+/// Friction state of a contact point in the last solve, for frames and tests.
+enum class FrictionState { None, Static, Dynamic };
+
+struct ContactPoint {
+  Vec2 point = Vec2::Zero();    ///< world point where impulses act: midway between the surfaces
+  Vec2 anchorA = Vec2::Zero();  ///< the point on A's surface, in A's body frame
+  Vec2 anchorB = Vec2::Zero();  ///< the point on B's surface, in B's body frame
+  double penetration = 0.0;     ///< m, along the normal; negative is a gap
+  FeatureId id = 0;
+
+  /// N s. Total normal impulse the solver applied this step (the accumulated impulse of
+  /// sequential impulses, which also warm-starts the next step).
+  double normalImpulse = 0.0;
+  /// N s. Total friction impulse along the tangent this step.
+  double tangentImpulse = 0.0;
+  FrictionState friction = FrictionState::None;
+};
+
+/// Coefficients of a contact from the two materials. The mixing rule is Box2D's, so both engines
+/// see the same numbers: friction √(μA·μB), restitution max(eA, eB).
+double mixFriction(double frictionA, double frictionB);
+double mixRestitution(double restitutionA, double restitutionB);
+
+struct Manifold {
+  int bodyA = -1;  ///< index into the world's bodies
+  int bodyB = -1;
+  Vec2 normal = Vec2(0.0, 1.0);  ///< unit, from A to B
+  double friction = 0.0;         ///< mixed coefficient of friction
+  double restitution = 0.0;      ///< mixed coefficient of restitution
+  int pointCount = 0;            ///< 0, 1 or 2
+  std::array<ContactPoint, 2> points;
+
+  Vec2 tangent() const { return leftPerpendicular(normal); }
+};
+
+}  // namespace impulse2d

@@ -1,0 +1,74 @@
+// The one interface every contact method sits behind, so a scene can run, trace and compare any
+// of them. The world calls solveVelocities after gravity and forces are integrated into the
+// velocities, and solvePositions after the positions are integrated (see world.h for the order).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "impulse2d/body.h"
+#include "impulse2d/contact.h"
+#include "impulse2d/settings.h"
+
+namespace impulse2d {
+
+/// One thing a solver did to one contact point, reported to an observer as it happens, so a
+/// student can watch a step iteration by iteration (`i2d run --trace-step`).
+struct SolverEvent {
+  enum class Phase { Velocity, Position };
+  Phase phase = Phase::Velocity;
+  int iteration = 0;  ///< 0-based count of events of this phase in this step
+  int manifold = -1;  ///< index into the step's manifolds
+  int point = -1;     ///< 0 or 1
+  /// Velocity phase: the velocity change the solver wanted at the point along the normal (m/s).
+  /// Position phase: the penetration it removed (m).
+  double desiredChange = 0.0;
+  double normalImpulse = 0.0;   ///< N s applied by this event along the normal
+  double tangentImpulse = 0.0;  ///< N s applied by this event along the tangent
+};
+
+class SolverObserver {
+ public:
+  virtual ~SolverObserver() = default;
+  /// Called after the event's impulse or move has been applied to the bodies.
+  virtual void onSolverEvent(const SolverEvent& event, const std::vector<Body>& bodies,
+                             const std::vector<Manifold>& manifolds) = 0;
+};
+
+/// What a solver works on in one step.
+struct StepContext {
+  std::vector<Body>& bodies;
+  std::vector<Manifold>& manifolds;
+  double dt;
+  SolverObserver* observer = nullptr;  ///< null unless the step is being traced
+};
+
+/// How the last solve went. Iterative methods report their iterations; the reference reports its
+/// residual and whether it met its tolerance, never a silent half answer.
+struct SolveReport {
+  int iterations = 0;
+  double residual = 0.0;
+  bool converged = true;
+};
+
+class ContactSolver {
+ public:
+  virtual ~ContactSolver() = default;
+  /// The name scene files use: "micro", "sequential", "reference".
+  virtual std::string name() const = 0;
+  /// Contact impulses: change the velocities so no contact keeps closing.
+  virtual void solveVelocities(const StepContext& context) = 0;
+  /// Remove the penetration that remains after the positions moved, without adding velocity.
+  virtual void solvePositions(const StepContext& context) = 0;
+  virtual SolveReport lastReport() const { return {}; }
+};
+
+/// The names of the solvers this library builds, in the order they were written.
+std::vector<std::string> solverNames();
+
+/// The solver of that name with its settings from `settings`; throws std::invalid_argument naming
+/// the known solvers when the name is unknown.
+std::unique_ptr<ContactSolver> makeSolver(const std::string& name, const SolverSettings& settings);
+
+}  // namespace impulse2d

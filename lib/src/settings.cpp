@@ -1,0 +1,46 @@
+// The settings fields by their scene-file names.
+#include "impulse2d/settings.h"
+
+namespace impulse2d {
+
+std::vector<SettingField> describe(WorldSettings& s) {
+  return {{"gravity", &s.gravity}, {"dt", &s.dt}, {"contact_margin", &s.contactMargin}};
+}
+
+std::vector<SettingField> describe(MicroCollisionSettings& s) {
+  return {{"remove_acceleration_velocity", &s.removeAccelerationVelocity},
+          {"lower_restitution_at_low_speed", &s.lowerRestitutionAtLowSpeed},
+          {"restitution_velocity_limit", &s.restitutionVelocityLimit},
+          {"friction", &s.friction},
+          {"velocity_epsilon", &s.velocityEpsilon},
+          {"position_epsilon", &s.positionEpsilon},
+          {"velocity_iterations_per_contact", &s.velocityIterationsPerContact},
+          {"position_iterations_per_contact", &s.positionIterationsPerContact},
+          {"angular_move_limit", &s.angularMoveLimit},
+          {"singular_matrix_tolerance", &s.singularMatrixTolerance}};
+}
+
+std::vector<SettingField> describe(SequentialImpulseSettings& s) {
+  return {{"velocity_iterations", &s.velocityIterations},
+          {"accumulate_impulses", &s.accumulateImpulses},
+          {"warm_starting", &s.warmStarting},
+          {"penetration_bias", &s.penetrationBias},
+          {"bias_factor", &s.biasFactor},
+          {"allowed_penetration", &s.allowedPenetration},
+          {"max_bias_velocity", &s.maxBiasVelocity},
+          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
+          {"position_iterations", &s.positionIterations},
+          {"position_correction_factor", &s.positionCorrectionFactor},
+          {"max_position_correction", &s.maxPositionCorrection}};
+}
+
+std::vector<SettingField> describe(ReferenceSolverSettings& s) {
+  return {{"residual_tolerance", &s.residualTolerance},
+          {"max_pivots", &s.maxPivots},
+          {"bias_factor", &s.biasFactor},
+          {"allowed_penetration", &s.allowedPenetration},
+          {"max_bias_velocity", &s.maxBiasVelocity},
+          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}};
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,21 @@
+// The solver factory: solver names -> solvers.
+#include "impulse2d/solver.h"
+
+#include <stdexcept>
+
+#include "impulse2d/micro_collision.h"
+
+namespace impulse2d {
+
+std::vector<std::string> solverNames() { return {"micro"}; }
+
+std::unique_ptr<ContactSolver> makeSolver(const std::string& name, const SolverSettings& settings) {
+  if (name == "micro") return std::make_unique<MicroCollisionSolver>(settings.micro);
+  std::string known;
+  for (const std::string& candidate : solverNames()) {
+    known += (known.empty() ? "" : ", ") + candidate;
+  }
+  throw std::invalid_argument("unknown solver '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace impulse2d
