@@ -43,4 +43,9 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}};
 }
 
+std::vector<SettingField> describe(Box2dSettings& s) {
+  return {{"velocity_iterations", &s.velocityIterations},
+          {"position_iterations", &s.positionIterations}};
+}
+
 }  // namespace impulse2d

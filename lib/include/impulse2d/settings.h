@@ -89,12 +89,21 @@ struct ReferenceSolverSettings {
   double restitutionVelocityThreshold = 1.0;
 };
 
+/// Box2D 2.4 running the same scene (the behaviour reference): its iteration counts.
+struct Box2dSettings {
+  /// Box2D's velocity iterations per step (its testbed default).
+  int velocityIterations = 8;
+  /// Box2D's position iterations per step (its testbed default).
+  int positionIterations = 3;
+};
+
 /// The settings of every solver; a scene picks one solver, and its [solver] table sets that
 /// solver's struct.
 struct SolverSettings {
   MicroCollisionSettings micro;
   SequentialImpulseSettings sequential;
   ReferenceSolverSettings reference;
+  Box2dSettings box2d;
 };
 
 /// One named field of a settings struct, for setting it by name from a scene file or the command
@@ -108,5 +117,6 @@ std::vector<SettingField> describe(WorldSettings& settings);
 std::vector<SettingField> describe(MicroCollisionSettings& settings);
 std::vector<SettingField> describe(SequentialImpulseSettings& settings);
 std::vector<SettingField> describe(ReferenceSolverSettings& settings);
+std::vector<SettingField> describe(Box2dSettings& settings);
 
 }  // namespace impulse2d
