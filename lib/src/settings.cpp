@@ -31,16 +31,26 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
           {"position_iterations", &s.positionIterations},
           {"position_correction_factor", &s.positionCorrectionFactor},
-          {"max_position_correction", &s.maxPositionCorrection}};
+          {"max_position_correction", &s.maxPositionCorrection},
+          {"block_solver", &s.blockSolver},
+          {"block_condition_limit", &s.blockConditionLimit}};
 }
 
 std::vector<SettingField> describe(ReferenceSolverSettings& s) {
   return {{"residual_tolerance", &s.residualTolerance},
           {"max_pivots", &s.maxPivots},
+          {"pivot_tolerance", &s.pivotTolerance},
+          {"tie_tolerance", &s.tieTolerance},
+          {"degeneracy_perturbation", &s.degeneracyPerturbation},
           {"bias_factor", &s.biasFactor},
           {"allowed_penetration", &s.allowedPenetration},
           {"max_bias_velocity", &s.maxBiasVelocity},
-          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}};
+          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
+          {"position_iterations", &s.positionIterations},
+          {"position_correction_factor", &s.positionCorrectionFactor},
+          {"max_position_correction", &s.maxPositionCorrection},
+          {"block_position_correction", &s.blockPositionCorrection},
+          {"block_condition_limit", &s.blockConditionLimit}};
 }
 
 std::vector<SettingField> describe(Box2dSettings& s) {

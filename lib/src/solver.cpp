@@ -4,13 +4,17 @@
 #include <stdexcept>
 
 #include "impulse2d/micro_collision.h"
+#include "impulse2d/reference_solver.h"
+#include "impulse2d/sequential_impulses.h"
 
 namespace impulse2d {
 
-std::vector<std::string> solverNames() { return {"micro"}; }
+std::vector<std::string> solverNames() { return {"micro", "sequential", "reference"}; }
 
 std::unique_ptr<ContactSolver> makeSolver(const std::string& name, const SolverSettings& settings) {
   if (name == "micro") return std::make_unique<MicroCollisionSolver>(settings.micro);
+  if (name == "sequential") return std::make_unique<SequentialImpulseSolver>(settings.sequential);
+  if (name == "reference") return std::make_unique<ReferenceSolver>(settings.reference);
   std::string known;
   for (const std::string& candidate : solverNames()) {
     known += (known.empty() ? "" : ", ") + candidate;

@@ -30,7 +30,7 @@ inline Mat2 rotation(double angle) {
 
 /// Closed-form inverse of a 2×2 matrix; the zero matrix when it is singular (|det| ≤ tiny).
 inline Mat2 inverseOrZero(const Mat2& m, double tiny) {
-  const double det = m.determinant();
+  const double det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
   if (std::abs(det) <= tiny) return Mat2::Zero();
   Mat2 inverse;
   inverse << m(1, 1), -m(0, 1), -m(1, 0), m(0, 0);

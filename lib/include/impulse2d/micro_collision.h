@@ -1,5 +1,6 @@
 // The lecture's method (lecture 3.6, after Millington ch. 14-15): resting contacts as a series of
-// micro-collisions, one impulse per contact per update, resolved worst first.
+// micro-collisions, one impulse per contact per update, resolved worst first; then penetration
+// resolved worst first by moving the bodies apart.
 #pragma once
 
 #include <vector>
@@ -9,9 +10,12 @@
 namespace impulse2d {
 
 /// The 2×2 contact matrix of one contact point: the velocity change (normal, tangent) at the
-/// point that a unit impulse (normal, tangent) causes — the planar form of the lecture's
-/// skew-symmetric construction, summed over both bodies.
+/// point that a unit impulse (normal, tangent) causes, summed over both bodies — the planar form
+/// of the lecture's skew-symmetric construction.
 Mat2 contactMatrix(const Body& a, const Body& b, const Vec2& point, const Vec2& normal);
+
+/// The relative velocity (normal, tangent) of B against A at a world point (contact.h's signs).
+Vec2 contactVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& normal);
 
 class MicroCollisionSolver : public ContactSolver {
  public:
@@ -25,35 +29,45 @@ class MicroCollisionSolver : public ContactSolver {
   const MicroCollisionSettings& settings() const { return settings_; }
 
  private:
-  /// Per contact point: what velocity resolution needs between impulses.
+  /// What resolution needs to know of one contact point between impulses or moves.
   struct PointState {
     int manifold = 0;
     int point = 0;
-    Vec2 armA = Vec2::Zero();  ///< contact point − centre of mass of A
-    Vec2 armB = Vec2::Zero();
-    Mat2 contactMatrix = Mat2::Zero();
-    Mat2 inverseContactMatrix = Mat2::Zero();
+    Mat2 contactMatrix = Mat2::Zero();         ///< unit impulse -> velocity change
+    Mat2 inverseContactMatrix = Mat2::Zero();  ///< velocity change -> impulse
     Vec2 contactVelocity = Vec2::Zero();  ///< (normal, tangent) relative velocity now
-    double targetNormalVelocity = 0.0;    ///< the bounce: −c·(vs − vacc), taken before the solve
-    bool active = false;                  ///< touching, or closing a gap within this step
+    /// The separating velocity wanted: the bounce −c·(vs − vacc), fixed before the solve, or
+    /// without a bounce −gap/dt for a contact with a gap (it may close it, no more).
+    double targetNormalVelocity = 0.0;
+    double penetration = 0.0;             ///< m, kept current while bodies move
+    Vec2 totalImpulse = Vec2::Zero();     ///< (normal, tangent) applied here in this update
+    FrictionState friction = FrictionState::None;
   };
 
   void prepare(const StepContext& context);
-  double restitutionFor(const Manifold& manifold, const PointState& state) const;
-  double desiredVelocityChange(const PointState& state) const;
+  void indexContactsByBody(const StepContext& context);
+  double appliedRestitution(const Manifold& manifold, double closingSpeed) const;
+  double accelerationVelocity(const StepContext& context, const Manifold& manifold) const;
+  Vec2 desiredVelocityChange(const PointState& state) const;
+  double severity(const PointState& state) const;
   int worstVelocityPoint() const;
-  Vec2 frictionImpulse(const PointState& state, const Manifold& manifold,
-                       FrictionState& friction) const;
-  void applyVelocityImpulse(const StepContext& context, int index, int iteration);
+  Vec2 newTotalImpulse(const PointState& state, double friction, const Vec2& desiredChange,
+                       FrictionState& frictionState) const;
+  void applyVelocityChange(const StepContext& context, int index, int iteration);
   void refreshContactVelocities(const StepContext& context, int bodyIndex);
 
-  int worstPenetration(const StepContext& context) const;
+  int worstPenetration() const;
   void resolvePenetration(const StepContext& context, int index, int iteration);
-  void movePenetrations(const StepContext& context, int bodyIndex, const Vec2& linearMove,
-                        double angularMove);
+  void moveBody(Body& body, const Vec2& arm, const Vec2& direction, double penetration,
+                double totalInertia) const;
+  void refreshPenetrations(const StepContext& context, int bodyIndex);
+  double currentPenetration(const StepContext& context, const PointState& state) const;
 
   MicroCollisionSettings settings_;
   std::vector<PointState> states_;
+  std::vector<int> contactsOfBodyStart_;  ///< states_ of body i: contactsOfBody_[start[i], start[i+1])
+  std::vector<int> contactsOfBody_;
+  double dt_ = 0.0;  ///< the step being resolved
   SolveReport report_;
 };
 

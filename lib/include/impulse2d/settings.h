@@ -49,8 +49,10 @@ struct MicroCollisionSettings {
 
 /// Sequential impulses ("Explaining the rigid body solver", Box2D-Lite).
 struct SequentialImpulseSettings {
-  /// Sweeps over all contacts per step.
-  int velocityIterations = 8;
+  /// Sweeps over all contacts per step. A stack of n boxes starting from rest needs about n
+  /// sweeps before the weight reaches the bottom within one step; with 20, a 20-box stack
+  /// settles within the slop (Box2D's 8 let it sink about 1 cm per contact and sway).
+  int velocityIterations = 20;
   /// Clamp each contact's running total of impulse rather than each impulse.
   bool accumulateImpulses = true;
   /// Begin each step from the last step's totals, matched by feature id (needs accumulation).
@@ -71,6 +73,12 @@ struct SequentialImpulseSettings {
   double positionCorrectionFactor = 0.2;
   /// m. Largest correction the position pass makes at one contact in one sweep.
   double maxPositionCorrection = 0.2;
+  /// Solve the two normal impulses (and position corrections) of a two-point contact together,
+  /// exactly (Box2D 2.4's block solver). Off: one point at a time, as the text does; the corner
+  /// visited first then always gets more, and a tall stack leans and sways from it.
+  bool blockSolver = true;
+  /// A two-point contact is solved as a block only while k₀₀² < this × det K (Box2D's 1000).
+  double blockConditionLimit = 1000.0;
 };
 
 /// The global solve of all contact impulses together: the accuracy reference.
@@ -79,6 +87,15 @@ struct ReferenceSolverSettings {
   double residualTolerance = 1e-10;
   /// Pivot limit of the LCP solver; reaching it is reported, never silently accepted.
   int maxPivots = 100000;
+  /// Lemke: a column entry must exceed this times the column's largest entry to be a pivot.
+  double pivotTolerance = 1e-9;
+  /// Lemke: ratios this close (relative) are a tie, broken by the lexicographic rule.
+  double tieTolerance = 1e-12;
+  /// A resting pile is massively degenerate (many zero velocities); in floating point the
+  /// lexicographic rule can then still end on a ray. Lemke is retried once with q moved by
+  /// this much (relative to its largest entry, growing along the rows), the textbook remedy;
+  /// the answer is checked against the unperturbed problem, so it cannot pass unnoticed.
+  double degeneracyPerturbation = 1e-10;
   /// Target a separating velocity that grows with penetration, as sequential impulses do.
   double biasFactor = 0.2;
   /// m. Penetration the bias leaves alone.
@@ -87,6 +104,16 @@ struct ReferenceSolverSettings {
   double maxBiasVelocity = 4.0;
   /// m/s. Below this closing speed a contact does not bounce.
   double restitutionVelocityThreshold = 1.0;
+  /// Sweeps of the position pass (the one sequential impulses runs); 0 turns it off.
+  int positionIterations = 3;
+  /// Fraction of the remaining penetration beyond the slop the position pass removes per sweep.
+  double positionCorrectionFactor = 0.2;
+  /// m. Largest correction the position pass makes at one contact in one sweep.
+  double maxPositionCorrection = 0.2;
+  /// The position pass corrects a two-point contact's corners together (as sequential impulses).
+  bool blockPositionCorrection = true;
+  /// A two-point contact is corrected as a block only while k₀₀² < this × det K.
+  double blockConditionLimit = 1000.0;
 };
 
 /// Box2D 2.4 running the same scene (the behaviour reference): its iteration counts.

@@ -1,0 +1,14 @@
+// The i2d commands. Each returns the exit code of success and throws on failure (failures.h).
+#pragma once
+
+#include "options.h"
+
+namespace i2d {
+
+/// `i2d run`: runs the scene, writes the CSV if asked, prints the summary.
+int runCommand(const RunOptions& options);
+
+/// `i2d check`: validates the scene and prints what it holds.
+int checkCommand(const CheckOptions& options);
+
+}  // namespace i2d

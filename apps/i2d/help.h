@@ -1,0 +1,10 @@
+// What `i2d --help` and `i2d COMMAND --help` print.
+#pragma once
+
+namespace i2d {
+
+extern const char* const kGeneralHelp;
+extern const char* const kRunHelp;
+extern const char* const kCheckHelp;
+
+}  // namespace i2d

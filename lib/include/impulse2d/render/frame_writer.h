@@ -1,0 +1,60 @@
+// Numbered PNG frames of a run, every K-th step, and the run's contact sheet:
+//   ROOT/SCENE/PREFIX_00000.png, PREFIX_00001.png, ...  (numbered from 0 without gaps, ready for
+//   `ffmpeg -i PREFIX_%05d.png`), and ROOT/SCENE/PREFIX_sheet.png.
+// PREFIX is the scene's name for a run; traces and comparisons use their own (tracePrefix,
+// comparePrefix) so their frames sit beside the run's without mixing with them.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "impulse2d/render/canvas.h"
+#include "impulse2d/render/png.h"
+#include "impulse2d/render/render_settings.h"
+
+namespace impulse2d::render {
+
+/// "SCENE_step00042": the prefix of the frames tracing step 42.
+std::string tracePrefix(const std::string& scene, long step);
+/// "SCENE_compare": the prefix of the side-by-side frames of `i2d compare`.
+std::string comparePrefix(const std::string& scene);
+
+class FrameWriter {
+ public:
+  /// Frames go to root/scene/. Creates root (whose parent must exist) and root/scene, removes
+  /// frames of an earlier run with the same prefix (so ffmpeg sees only this run), and checks the
+  /// directory is writable. Throws one RenderError naming the path when it is not.
+  FrameWriter(const std::filesystem::path& root, const std::string& scene, int every = 1,
+              const std::string& prefix = "", const RenderSettings& settings = {});
+
+  /// True for the steps whose frames are kept: 0, every, 2·every, ...
+  bool wants(long step) const { return step % every_ == 0; }
+  /// Writes the next numbered frame, of the given step; returns its path.
+  std::filesystem::path write(long step, const Canvas& frame);
+  /// Writes PREFIX_sheet.png from the frames written so far (read back from disk, so a run keeps
+  /// no images in memory); returns its path. Throws RenderError when no frame was written.
+  std::filesystem::path writeContactSheet() const;
+
+  /// Path of frame number `index`: directory()/PREFIX_%05d.png.
+  std::filesystem::path framePath(int index) const;
+  std::filesystem::path sheetPath() const;
+  const std::filesystem::path& directory() const { return directory_; }
+  const std::string& prefix() const { return prefix_; }
+  int every() const { return every_; }
+  int frameCount() const { return int(steps_.size()); }
+  /// The step of each frame written, by frame number.
+  const std::vector<long>& steps() const { return steps_; }
+
+ private:
+  void prepareDirectory(const std::filesystem::path& root);
+  void removeEarlierFrames() const;
+
+  std::filesystem::path directory_;
+  std::string prefix_;
+  int every_ = 1;
+  RenderSettings settings_;
+  std::vector<long> steps_;
+};
+
+}  // namespace impulse2d::render

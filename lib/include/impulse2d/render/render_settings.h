@@ -1,0 +1,102 @@
+// Every colour, threshold and size the frames use, with its documented default, in one place.
+// Sizes are in pixels unless the comment says metres; thresholds are in SI units.
+#pragma once
+
+#include "impulse2d/render/canvas.h"
+
+namespace impulse2d::render {
+
+/// Body colours by state (see BodyState in frame.h) and the colours of the overlays. The body
+/// colours are the Okabe-Ito palette, which stays distinguishable under colour blindness.
+struct Palette {
+  Color background{250, 250, 247, 255};
+  Color staticBody{160, 160, 160, 255};    ///< grey: never moves
+  Color flyingBody{86, 180, 233, 255};     ///< sky blue: no contact points
+  Color restingBody{0, 158, 115, 255};     ///< bluish green: in contact and slow
+  Color touchingBody{204, 121, 167, 255};  ///< reddish purple: in contact, moving, not sliding
+  Color slidingBody{230, 159, 0, 255};     ///< orange: a contact point slides
+  Color sleepingBody{200, 205, 215, 255};  ///< pale grey-blue: asleep
+  Color outline{40, 40, 40, 255};
+  Color rotationMark{20, 20, 20, 255};
+  Color contactPoint{255, 255, 255, 255};  ///< a white dot ringed in the outline colour
+  Color contactNormal{60, 60, 60, 255};
+  Color normalImpulse{0, 90, 178, 255};
+  Color staticFriction{120, 40, 160, 255};  ///< friction impulse inside the cone (sticking)
+  Color dynamicFriction{220, 20, 60, 255};  ///< friction impulse on the cone (sliding)
+  Color velocity{20, 20, 20, 255};
+  Color highlight{255, 0, 200, 255};  ///< the contact a trace frame is resolving
+  Color text{20, 20, 20, 255};
+  Color labelBackground{255, 255, 255, 200};  ///< behind the heads-up line and labels
+  Color sheetBackground{70, 70, 70, 255};     ///< between thumbnails and panels
+  Color sheetLabel{240, 240, 236, 255};       ///< the bars of step numbers and panel labels
+};
+
+/// What a frame shows besides the bodies; each can be turned off.
+struct Overlays {
+  bool rotationMarks = true;     ///< a line from a moving body's centre along its x axis
+  bool contactPoints = true;     ///< a dot at each contact point
+  bool contactNormals = true;    ///< a short line along each contact's normal, from A to B
+  bool normalImpulses = true;    ///< the step's normal impulse at each point, as an arrow
+  bool frictionImpulses = true;  ///< the step's friction impulse, coloured static or dynamic
+  bool velocities = false;       ///< each dynamic body's velocity (always on in trace frames)
+  bool headsUp = true;           ///< scene, solver, step, time and energy along the top
+};
+
+struct RenderSettings {
+  Palette colours;
+  Overlays overlays;
+
+  /// m/s. A body in contact whose centre moves slower than this (and turns slower than
+  /// restingAngularSpeed) counts as resting: about 1 mm per step at 60 Hz.
+  double restingSpeed = 0.05;
+  /// rad/s. The turning rate under which a body in contact can count as resting.
+  double restingAngularSpeed = 0.1;
+  /// m/s. A contact point whose surfaces slip past each other faster than this is sliding.
+  double slidingSpeed = 0.02;
+
+  /// m per N s. Length of an impulse arrow per unit of impulse: a 1 kg box resting on the ground
+  /// takes m·g·dt ≈ 0.16 N s a step, drawn 0.16 m long (a sixth of a 1 m box).
+  double impulseScale = 1.0;
+  /// m per N s. Length of the impulse arrow of one solver event in a trace frame. One event
+  /// applies a fraction of a step's impulse (0.02 N s is typical for a 1 kg box), so it is drawn
+  /// twenty times larger than impulseScale: 0.4 m.
+  double traceImpulseScale = 20.0;
+  /// m per m/s. Length of a velocity arrow: a body falling at 10 m/s gets a 1 m arrow.
+  double velocityScale = 0.1;
+  /// Arrows longer than this are cut to it, so one large impulse cannot cover the frame.
+  double maxArrowLength = 150.0;
+  /// Arrows shorter than this are not drawn: they would be only a head.
+  double minArrowLength = 2.0;
+  double arrowWidth = 2.0;
+  double arrowHeadLength = 7.0;
+  double arrowHeadWidth = 6.0;
+
+  double outlineWidth = 1.0;
+  double rotationMarkWidth = 1.5;
+  double contactPointRadius = 3.0;
+  double contactNormalLength = 10.0;
+  double contactNormalWidth = 1.0;
+  /// Radius of the ring round the contact a trace frame is resolving.
+  double highlightRadius = 9.0;
+  double highlightWidth = 2.5;
+
+  /// Font pixels per canvas pixel for the heads-up line and labels (stb_easy_font is ~7 px tall).
+  double textScale = 2.0;
+  /// Space between text and the edge of its background.
+  double textMargin = 4.0;
+
+  /// Fraction of the image left empty on each side when the camera fits the scene.
+  double fitPadding = 0.04;
+  /// How far a static body may stretch the fitted view beyond the dynamic bodies, as a fraction
+  /// of their extent: a 1 km ground under a 20 m pyramid shows as the pyramid's floor.
+  double staticFitReach = 0.25;
+
+  /// Contact sheet: this many thumbnails, evenly spaced over the run, first and last included.
+  int sheetThumbnails = 12;
+  int sheetColumns = 4;
+  int sheetThumbnailWidth = 240;
+  /// Gap between thumbnails, and between panels of a comparison.
+  int spacing = 4;
+};
+
+}  // namespace impulse2d::render

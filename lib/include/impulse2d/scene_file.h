@@ -1,0 +1,54 @@
+// Scene files: TOML text -> Scene. The format (every key, its unit, default and range) is
+// documented in docs/scene-format.md. Every problem with a file is reported as one SceneError
+// that says where it is, so a student can fix a scene without reading the loader.
+//
+// Positions in files are body origins; a polygon is re-centred on its centroid, so the Scene (and
+// everything built from it, the CSV of `i2d run` included) holds the centre of mass.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impulse2d/scene.h"
+
+namespace impulse2d {
+
+/// A scene that cannot be loaded. what() is exactly "FILE:LINE:COLUMN: message" (lines and
+/// columns from 1), or "FILE: message" when the file itself cannot be read.
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(const std::string& source, int line, int column, const std::string& message);
+  SceneError(const std::string& source, const std::string& message);
+
+  const std::string& source() const { return source_; }
+  int line() const { return line_; }      ///< 0 when the error has no location
+  int column() const { return column_; }  ///< 0 when the error has no location
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string source_;
+  int line_ = 0;
+  int column_ = 0;
+  std::string message_;
+};
+
+/// Reads and parses the scene file at `path`; the scene is named after the file's stem.
+Scene loadSceneFile(const std::string& path);
+
+/// Parses scene text; `sourceName` names it in errors and gives the scene its name (its stem).
+Scene parseScene(std::string_view text, const std::string& sourceName);
+
+/// Applies one command-line override "section.key=value" (section world or solver) to the scene,
+/// with the value written as in a scene file; a bare word counts as a string (world.solver=micro).
+/// Errors are SceneErrors located in the assignment, named "--set".
+void applySetting(Scene& scene, const std::string& assignment);
+
+/// The solver names a scene may choose: the library's solverNames() and "box2d".
+std::vector<std::string> sceneSolverNames();
+
+/// The fields of the settings struct of the named solver (empty for an unknown name).
+std::vector<SettingField> solverSettingFields(SolverSettings& settings, const std::string& solver);
+
+}  // namespace impulse2d

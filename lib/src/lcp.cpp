@@ -1,0 +1,162 @@
+// Lemke's complementary pivoting method in revised form: the basis inverse is kept and updated by
+// one rank-one change per pivot, so a pivot costs O(n²) and a solve O(n³).
+//
+// The system is  I·w − M·z − 1·z0 = q  with every variable ≥ 0. Variables are numbered w₀..wₙ₋₁,
+// then z₀..zₙ₋₁, then the artificial z0. Starting from w = q, z0 enters to make every w ≥ 0;
+// from then on the variable that enters is always the complement of the one that just left,
+// until z0 itself leaves: then w and z are complementary and z0 = 0, a solution.
+#include "impulse2d/lcp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace impulse2d {
+namespace {
+
+/// The revised tableau: B⁻¹, the values of the basic variables, and which variable each row holds.
+struct LemkeTableau {
+  Eigen::MatrixXd basisInverse;
+  Eigen::VectorXd basicValues;
+  std::vector<int> basicVariable;
+};
+
+/// The column of the constraint matrix [I, −M, −1] that belongs to a variable.
+Eigen::VectorXd constraintColumn(const Eigen::MatrixXd& m, int variable) {
+  const int n = static_cast<int>(m.rows());
+  if (variable < n) return Eigen::VectorXd::Unit(n, variable);
+  if (variable < 2 * n) return -m.col(variable - n);
+  return -Eigen::VectorXd::Ones(n);
+}
+
+/// w_i and z_i are complements: exactly one of them may be basic at a solution.
+int complement(int variable, int n) {
+  return variable < n ? variable + n : variable - n;
+}
+
+/// The entering variable replaces the basic variable of `row`; `direction` is B⁻¹ times the
+/// entering variable's column.
+void pivot(LemkeTableau& tableau, const Eigen::VectorXd& direction, int row, int entering) {
+  const Eigen::RowVectorXd pivotRow = tableau.basisInverse.row(row) / direction(row);
+  const double pivotValue = tableau.basicValues(row) / direction(row);
+  tableau.basisInverse.noalias() -= direction * pivotRow;
+  tableau.basicValues -= pivotValue * direction;
+  tableau.basisInverse.row(row) = pivotRow;
+  tableau.basicValues(row) = pivotValue;
+  tableau.basicVariable[static_cast<size_t>(row)] = entering;
+}
+
+/// The candidates whose ratio is smallest, within the relative tie tolerance.
+template <class Ratio>
+std::vector<int> smallestRatios(const std::vector<int>& candidates, const Ratio& ratio,
+                                double tieTolerance) {
+  double smallest = ratio(candidates.front());
+  for (int row : candidates) smallest = std::min(smallest, ratio(row));
+  const double tie = tieTolerance * std::max(1.0, std::abs(smallest));
+  std::vector<int> kept;
+  for (int row : candidates) {
+    if (ratio(row) <= smallest + tie) kept.push_back(row);
+  }
+  return kept;
+}
+
+/// The lexicographic minimum ratio test: the row minimising (x_B,i, row i of B⁻¹) / yᵢ over the
+/// rows with yᵢ > 0, compared entry by entry. It keeps the basis lexicographically positive,
+/// which rules out cycling. The artificial variable wins any tie of the first entry. −1: no
+/// row limits the step (a ray).
+int leavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
+               const LemkeOptions& options, int artificial) {
+  const double smallestPivot =
+      options.pivotTolerance * std::max(1.0, direction.cwiseAbs().maxCoeff());
+  std::vector<int> candidates;
+  for (int row = 0; row < direction.size(); ++row) {
+    if (direction(row) > smallestPivot) candidates.push_back(row);
+  }
+  if (candidates.empty()) return -1;
+  candidates = smallestRatios(
+      candidates, [&](int row) { return tableau.basicValues(row) / direction(row); },
+      options.tieTolerance);
+  for (int row : candidates) {
+    if (tableau.basicVariable[static_cast<size_t>(row)] == artificial) return row;
+  }
+  for (int column = 0; candidates.size() > 1 && column < direction.size(); ++column) {
+    candidates = smallestRatios(
+        candidates, [&](int row) { return tableau.basisInverse(row, column) / direction(row); },
+        options.tieTolerance);
+  }
+  return candidates.front();
+}
+
+/// The first pivot brings z0 in at the most negative q; ties go to the last such row, which is
+/// the lexicographic choice for the start from B = I.
+int firstLeavingRow(const Eigen::VectorXd& q) {
+  int row = 0;
+  for (int i = 1; i < q.size(); ++i) {
+    if (q(i) <= q(row)) row = i;
+  }
+  return row;
+}
+
+LcpSolution extractSolution(const LemkeTableau& tableau, const Eigen::MatrixXd& m,
+                            const Eigen::VectorXd& q, LcpSolution solution) {
+  const int n = static_cast<int>(q.size());
+  solution.z = Eigen::VectorXd::Zero(n);
+  for (int row = 0; row < n; ++row) {
+    const int variable = tableau.basicVariable[static_cast<size_t>(row)];
+    if (variable >= n && variable < 2 * n) solution.z(variable - n) = tableau.basicValues(row);
+  }
+  solution.w = m * solution.z + q;
+  solution.solved = true;
+  return solution;
+}
+
+LcpSolution failed(LcpSolution solution, const std::string& reason) {
+  solution.solved = false;
+  solution.failure = reason;
+  return solution;
+}
+
+}  // namespace
+
+LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
+                       const LemkeOptions& options) {
+  const int n = static_cast<int>(q.size());
+  LcpSolution solution;
+  if (n == 0 || q.minCoeff() >= 0.0) {
+    solution.z = Eigen::VectorXd::Zero(n);
+    solution.w = q;
+    solution.solved = true;
+    return solution;
+  }
+  LemkeTableau tableau{Eigen::MatrixXd::Identity(n, n), q,
+                       std::vector<int>(static_cast<size_t>(n))};
+  for (int i = 0; i < n; ++i) tableau.basicVariable[static_cast<size_t>(i)] = i;
+  const int artificial = 2 * n;
+  int entering = artificial;
+  Eigen::VectorXd direction = -Eigen::VectorXd::Ones(n);
+  int row = firstLeavingRow(q);
+  for (solution.pivots = 1;; ++solution.pivots) {
+    const int leaving = tableau.basicVariable[static_cast<size_t>(row)];
+    pivot(tableau, direction, row, entering);
+    if (leaving == artificial) return extractSolution(tableau, m, q, solution);
+    if (solution.pivots >= options.maxPivots) {
+      return failed(solution, "Lemke: pivot limit of " + std::to_string(options.maxPivots) +
+                                  " reached without a solution");
+    }
+    entering = complement(leaving, n);
+    direction.noalias() = tableau.basisInverse * constraintColumn(m, entering);
+    row = leavingRow(tableau, direction, options, artificial);
+    if (row < 0) {
+      return failed(solution, "Lemke: secondary ray after " + std::to_string(solution.pivots) +
+                                  " pivots (no solution found from this start)");
+    }
+  }
+}
+
+double naturalResidual(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
+                       const Eigen::VectorXd& z) {
+  if (q.size() == 0) return 0.0;
+  return z.cwiseMin(m * z + q).cwiseAbs().maxCoeff();
+}
+
+}  // namespace impulse2d

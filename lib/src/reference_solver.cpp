@@ -1,0 +1,263 @@
+// The global reference: Delassus matrix, the frictional LCP of all points, Lemke, a residual
+// check of the answer, then the impulses.
+#include "impulse2d/reference_solver.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "impulse2d/position_correction.h"
+#include "impulse2d/sequential_impulses.h"
+
+namespace impulse2d {
+namespace {
+
+/// The LCP variables of point i sit at 4i + these offsets.
+enum LcpVariable {
+  NormalImpulse = 0,
+  PositiveFriction = 1,
+  NegativeFriction = 2,
+  SlidingSpeed = 3
+};
+constexpr int kVariablesPerPoint = 4;
+
+const ContactPoint& pointOf(const StepContext& context, int manifold, int point) {
+  return context.manifolds[static_cast<size_t>(manifold)].points[static_cast<size_t>(point)];
+}
+
+/// The 2×2 block of the Delassus matrix: how point j's impulses (columns: normal, tangent) change
+/// point i's relative velocities (rows: normal, tangent), summed over the dynamic bodies the two
+/// points share, with the sign convention's −1 for A and +1 for B on each side.
+Mat2 couplingBlock(const StepContext& context, const Manifold& mi, const Vec2& pi,
+                   const Manifold& mj, const Vec2& pj) {
+  const std::array<Vec2, 2> directionsI{mi.normal, mi.tangent()};
+  const std::array<Vec2, 2> directionsJ{mj.normal, mj.tangent()};
+  const std::array<std::pair<int, double>, 2> bodiesI{{{mi.bodyA, -1.0}, {mi.bodyB, 1.0}}};
+  const std::array<std::pair<int, double>, 2> bodiesJ{{{mj.bodyA, -1.0}, {mj.bodyB, 1.0}}};
+  Mat2 block = Mat2::Zero();
+  for (const auto& [bodyI, signI] : bodiesI) {
+    for (const auto& [bodyJ, signJ] : bodiesJ) {
+      const Body& body = context.bodies[static_cast<size_t>(bodyI)];
+      if (bodyI != bodyJ || body.isStatic()) continue;
+      for (int r = 0; r < 2; ++r) {
+        for (int c = 0; c < 2; ++c) {
+          block(r, c) += signI * signJ *
+                         velocityPerUnitImpulse(body, pj, directionsJ[static_cast<size_t>(c)], pi,
+                                                directionsI[static_cast<size_t>(r)]);
+        }
+      }
+    }
+  }
+  return block;
+}
+
+/// The worst violated condition of one point, in N s (velocities turned into impulses by the
+/// point's masses): a pull, friction outside the cone, an overlap velocity, a push while the
+/// point separates, and — while it slides — friction short of the limit or pushing along.
+double pointViolation(double normalImpulse, double tangentImpulse, double normalError,
+                      double tangentVelocity, double friction, double normalMass,
+                      double tangentMass) {
+  const double separation = normalMass * normalError;
+  const double sliding = tangentMass * std::abs(tangentVelocity);
+  const double frictionSlack = friction * normalImpulse - std::abs(tangentImpulse);
+  const double alongSliding =
+      tangentImpulse * tangentVelocity > 0.0 ? std::abs(tangentImpulse) : 0.0;
+  return std::max({0.0, -normalImpulse, -frictionSlack, -separation,
+                   std::min(std::max(normalImpulse, 0.0), std::max(separation, 0.0)),
+                   std::min(sliding, std::max(frictionSlack, 0.0)),
+                   std::min(sliding, alongSliding)});
+}
+
+}  // namespace
+
+void ReferenceSolver::solveVelocities(const StepContext& context) {
+  report_ = SolveReport{};
+  collectPoints(context);
+  buildDelassus(context);
+  buildFreeVelocity(context);
+  formulateLcp();
+  const LcpSolution solution = solveLcp();
+  report_.iterations = solution.pivots;
+  if (!solution.solved) fail(solution.failure);
+  const Eigen::VectorXd impulses = contactImpulses(solution.z);
+  report_.residual = residual(impulses);
+  if (!(report_.residual <= settings_.residualTolerance)) {
+    std::ostringstream reason;
+    reason << "relative residual " << report_.residual << " exceeds the tolerance "
+           << settings_.residualTolerance << " after " << solution.pivots
+           << " pivots (LCP natural residual "
+           << naturalResidual(lcpMatrix_, lcpVector_, solution.z) << ")";
+    fail(reason.str());
+  }
+  applyImpulses(context, impulses);
+}
+
+// The targets use the closing velocity before the solve, with the same rules (bounce threshold,
+// penetration bias, speculative gaps) as sequential impulses.
+void ReferenceSolver::collectPoints(const StepContext& context) {
+  const TargetVelocityRules rules{true, settings_.biasFactor, settings_.allowedPenetration,
+                                  settings_.maxBiasVelocity,
+                                  settings_.restitutionVelocityThreshold};
+  rows_.clear();
+  for (size_t m = 0; m < context.manifolds.size(); ++m) {
+    const Manifold& manifold = context.manifolds[m];
+    const Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
+    const Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
+      const double normalVelocity = relativeVelocity(a, b, point.point, manifold.normal);
+      rows_.push_back(PointRow{static_cast<int>(m), i, manifold.friction,
+                               targetSeparatingVelocity(normalVelocity, point.penetration,
+                                                        manifold.restitution, context.dt, rules)});
+    }
+  }
+}
+
+void ReferenceSolver::buildDelassus(const StepContext& context) {
+  const int count = static_cast<int>(rows_.size());
+  delassus_.setZero(2 * count, 2 * count);
+  for (int i = 0; i < count; ++i) {
+    const PointRow& rowI = rows_[static_cast<size_t>(i)];
+    const Manifold& mi = context.manifolds[static_cast<size_t>(rowI.manifold)];
+    for (int j = i; j < count; ++j) {
+      const PointRow& rowJ = rows_[static_cast<size_t>(j)];
+      const Manifold& mj = context.manifolds[static_cast<size_t>(rowJ.manifold)];
+      const Mat2 block =
+          couplingBlock(context, mi, pointOf(context, rowI.manifold, rowI.point).point, mj,
+                        pointOf(context, rowJ.manifold, rowJ.point).point);
+      delassus_.block<2, 2>(2 * i, 2 * j) = block;
+      delassus_.block<2, 2>(2 * j, 2 * i) = block.transpose();
+    }
+  }
+}
+
+void ReferenceSolver::buildFreeVelocity(const StepContext& context) {
+  freeVelocity_.resize(2 * static_cast<int>(rows_.size()));
+  for (size_t i = 0; i < rows_.size(); ++i) {
+    const Manifold& manifold = context.manifolds[static_cast<size_t>(rows_[i].manifold)];
+    const Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
+    const Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+    const Vec2& point = pointOf(context, rows_[i].manifold, rows_[i].point).point;
+    freeVelocity_(2 * static_cast<int>(i)) = relativeVelocity(a, b, point, manifold.normal);
+    freeVelocity_(2 * static_cast<int>(i) + 1) = relativeVelocity(a, b, point, manifold.tangent());
+  }
+}
+
+// Rows per point i (λt = λt⁺ − λt⁻):
+//   normal:   vn − target       = W_nn λn + W_nt λt + (vn₀ − target) ≥ 0  ⟂ λn
+//   λt⁺:      vt + β            = W_tn λn + W_tt λt + β + vt₀        ≥ 0  ⟂ λt⁺
+//   λt⁻:     −vt + β                                                 ≥ 0  ⟂ λt⁻
+//   β:        μλn − λt⁺ − λt⁻                                        ≥ 0  ⟂ β
+void ReferenceSolver::formulateLcp() {
+  const int count = static_cast<int>(rows_.size());
+  const int size = kVariablesPerPoint * count;
+  lcpMatrix_.setZero(size, size);
+  lcpVector_.setZero(size);
+  for (int i = 0; i < count; ++i) {
+    const int ri = kVariablesPerPoint * i;
+    for (int j = 0; j < count; ++j) {
+      const int cj = kVariablesPerPoint * j;
+      const Mat2 w = delassus_.block<2, 2>(2 * i, 2 * j);
+      for (int r = 0; r < 2; ++r) {
+        lcpMatrix_(ri + r, cj + NormalImpulse) = w(r, 0);
+        lcpMatrix_(ri + r, cj + PositiveFriction) = w(r, 1);
+        lcpMatrix_(ri + r, cj + NegativeFriction) = -w(r, 1);
+      }
+      lcpMatrix_.block<1, 3>(ri + NegativeFriction, cj) = -lcpMatrix_.block<1, 3>(ri + 1, cj);
+    }
+    lcpMatrix_(ri + PositiveFriction, ri + SlidingSpeed) = 1.0;
+    lcpMatrix_(ri + NegativeFriction, ri + SlidingSpeed) = 1.0;
+    lcpMatrix_(ri + SlidingSpeed, ri + NormalImpulse) = rows_[static_cast<size_t>(i)].friction;
+    lcpMatrix_(ri + SlidingSpeed, ri + PositiveFriction) = -1.0;
+    lcpMatrix_(ri + SlidingSpeed, ri + NegativeFriction) = -1.0;
+    lcpVector_(ri + NormalImpulse) =
+        freeVelocity_(2 * i) - rows_[static_cast<size_t>(i)].targetNormalVelocity;
+    lcpVector_(ri + PositiveFriction) = freeVelocity_(2 * i + 1);
+    lcpVector_(ri + NegativeFriction) = -freeVelocity_(2 * i + 1);
+  }
+}
+
+// Lemke on the problem as stated; on a ray (degeneracy defeating the floating-point
+// lexicographic rule) once more on a slightly perturbed q.
+LcpSolution ReferenceSolver::solveLcp() const {
+  const LemkeOptions options{settings_.maxPivots, settings_.pivotTolerance, settings_.tieTolerance};
+  const LcpSolution solution = solveLemke(lcpMatrix_, lcpVector_, options);
+  if (solution.solved || lcpVector_.size() == 0) return solution;
+  const int size = static_cast<int>(lcpVector_.size());
+  const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
+  const double scale = settings_.degeneracyPerturbation * lcpVector_.cwiseAbs().maxCoeff();
+  LcpSolution retry = solveLemke(lcpMatrix_, lcpVector_ + scale * growing, options);
+  retry.pivots += solution.pivots;
+  if (!retry.solved) retry.failure = solution.failure + "; perturbed retry: " + retry.failure;
+  return retry;
+}
+
+/// (λn, λt) of every point, interleaved like the Delassus rows.
+Eigen::VectorXd ReferenceSolver::contactImpulses(const Eigen::VectorXd& lcpSolution) const {
+  const int count = static_cast<int>(rows_.size());
+  Eigen::VectorXd impulses(2 * count);
+  for (int i = 0; i < count; ++i) {
+    const int ri = kVariablesPerPoint * i;
+    impulses(2 * i) = lcpSolution(ri + NormalImpulse);
+    impulses(2 * i + 1) = lcpSolution(ri + PositiveFriction) - lcpSolution(ri + NegativeFriction);
+  }
+  return impulses;
+}
+
+// The answer is checked against the physical conditions themselves, not the LCP's bookkeeping,
+// so an error in the formulation would show here too.
+double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
+  if (impulses.size() == 0) return 0.0;
+  const Eigen::VectorXd velocity = freeVelocity_ + delassus_ * impulses;
+  double worst = 0.0;
+  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+    const PointRow& row = rows_[static_cast<size_t>(i)];
+    worst = std::max(worst,
+                     pointViolation(impulses(2 * i), impulses(2 * i + 1),
+                                    velocity(2 * i) - row.targetNormalVelocity, velocity(2 * i + 1),
+                                    row.friction, 1.0 / delassus_(2 * i, 2 * i),
+                                    1.0 / delassus_(2 * i + 1, 2 * i + 1)));
+  }
+  const double largest = impulses.cwiseAbs().maxCoeff();
+  return largest > 0.0 ? worst / largest : worst;
+}
+
+void ReferenceSolver::applyImpulses(const StepContext& context,
+                                    const Eigen::VectorXd& impulses) const {
+  const double onLimit = settings_.residualTolerance * impulses.cwiseAbs().maxCoeff();
+  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+    const PointRow& row = rows_[static_cast<size_t>(i)];
+    Manifold& manifold = context.manifolds[static_cast<size_t>(row.manifold)];
+    ContactPoint& point = manifold.points[static_cast<size_t>(row.point)];
+    point.normalImpulse = impulses(2 * i);
+    point.tangentImpulse = impulses(2 * i + 1);
+    point.friction =
+        frictionStateOf(point.normalImpulse, point.tangentImpulse, row.friction, onLimit);
+    applyContactImpulse(context, manifold, row.point, point.normalImpulse, point.tangentImpulse);
+    if (context.observer == nullptr) continue;
+    const SolverEvent event{SolverEvent::Phase::Velocity,
+                            0,
+                            row.manifold,
+                            row.point,
+                            row.targetNormalVelocity - freeVelocity_(2 * i),
+                            point.normalImpulse,
+                            point.tangentImpulse};
+    context.observer->onSolverEvent(event, context.bodies, context.manifolds);
+  }
+}
+
+void ReferenceSolver::fail(const std::string& reason) {
+  report_.converged = false;
+  throw std::runtime_error("reference solver: " + reason);
+}
+
+void ReferenceSolver::solvePositions(const StepContext& context) {
+  correctPositions(context, PositionCorrection{
+                                settings_.positionIterations, settings_.positionCorrectionFactor,
+                                settings_.allowedPenetration, settings_.maxPositionCorrection,
+                                settings_.blockPositionCorrection, settings_.blockConditionLimit});
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,58 @@
+// The [world], [solver] and [render] tables of a scene file.
+#include <algorithm>
+
+#include "impulse2d/scene_file.h"
+#include "scene_tables.h"
+#include "toml_reading.h"
+
+namespace impulse2d::scene_file {
+namespace {
+
+const toml::table* findTable(const toml::table& root, std::string_view key) {
+  const toml::node* node = root.get(key);
+  return node ? &readTable(*node, key) : nullptr;
+}
+
+void readSolverName(const toml::table& world, Scene& scene) {
+  const toml::node* node = world.get("solver");
+  if (!node) return;
+  const std::string name = readString(*node, "solver");
+  const std::vector<std::string> known = sceneSolverNames();
+  if (std::find(known.begin(), known.end(), name) == known.end()) {
+    fail(node->source(), "unknown solver '" + name + "' (known: " + joinNames(known) + ")");
+  }
+  scene.solver = name;
+}
+
+}  // namespace
+
+void readWorld(const toml::table& root, Scene& scene) {
+  const toml::table* world = findTable(root, "world");
+  if (!world) return;
+  readSettingsTable(*world, describe(scene.world), {"steps", "solver"}, "[world]");
+  readOptional(*world, "steps", scene.steps, 0);
+  readSolverName(*world, scene);
+}
+
+void readSolver(const toml::table& root, Scene& scene) {
+  const toml::table* solver = findTable(root, "solver");
+  if (!solver) return;
+  readSettingsTable(*solver, solverSettingFields(scene.solverSettings, scene.solver), {},
+                    "[solver] for solver '" + scene.solver + "'");
+}
+
+void readRender(const toml::table& root, Scene& scene) {
+  const toml::table* render = findTable(root, "render");
+  if (!render) return;
+  rejectUnknownKeys(*render, {"width", "height", "centre", "scale"}, "[render]");
+  readOptional(*render, "width", scene.view.width, 1);
+  readOptional(*render, "height", scene.view.height, 1);
+  if (const toml::node* centre = render->get("centre")) {
+    scene.view.centre = readVec2(*centre, "centre");
+  }
+  if (const toml::node* scale = render->get("scale")) {
+    scene.view.scale = readNumber(*scale, "scale", Range::Positive);
+  }
+}
+
+}  // namespace impulse2d::scene_file

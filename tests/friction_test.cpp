@@ -1,0 +1,117 @@
+// Friction as impulses (lecture 3.6): the 2×2 contact matrix, static friction that holds a box on
+// a gentle incline, dynamic friction that lets it slide at g(sin θ − μ cos θ), and the coupling
+// of spin and slip that makes a disk roll at (2/3) g sin θ.
+#include <catch2/catch.hpp>
+
+#include <iostream>
+
+#include "impulse2d/micro_collision.h"
+#include "lecture_scenes.h"
+
+using namespace impulse2d;
+
+namespace {
+
+constexpr double kDt = 1.0 / 60.0;
+constexpr double kPi = 3.14159265358979323846;
+
+double degrees(double d) { return d * kPi / 180.0; }
+
+/// The text's unit-impulse probe: apply a unit impulse along `direction` (+ to B, − to A) on
+/// copies of the bodies and measure how the contact velocity (normal, tangent) changes.
+Vec2 probe(Body a, Body b, const Vec2& point, const Vec2& normal, const Vec2& direction) {
+  const Vec2 before = contactVelocity(a, b, point, normal);
+  a.applyImpulse(-direction, point);
+  b.applyImpulse(direction, point);
+  return contactVelocity(a, b, point, normal) - before;
+}
+
+struct SlopeRun {
+  double distance = 0.0;      ///< m travelled down the slope
+  double acceleration = 0.0;  ///< m/s², from the velocity between t = 1 s and t = 3 s
+  double rollingMismatch = 0.0;  ///< |v − ω r| / |v| at the end, for disks
+};
+
+SlopeRun runOnSlope(const BodyDef& body, double angle, double friction, double seconds) {
+  Scene scene = lecture::sceneWith("micro", kDt);
+  scene.bodies.push_back(lecture::ground(friction, angle));
+  scene.bodies.push_back(body);
+  auto world = buildWorld(scene);
+  const Vec2 down = lecture::downSlope(angle);
+  const Vec2 start = world->bodies()[1].position;
+  double speedAtOne = 0.0;
+  double speedAtThree = 0.0;
+  for (int step = 1; step * kDt <= seconds + 1e-9; ++step) {
+    world->step();
+    const double speed = world->bodies()[1].velocity.dot(down);
+    if (step == 60) speedAtOne = speed;
+    if (step == 180) speedAtThree = speed;
+  }
+  const Body& end = world->bodies()[1];
+  SlopeRun run;
+  run.distance = (end.position - start).dot(down);
+  run.acceleration = (speedAtThree - speedAtOne) / 2.0;
+  if (end.shape.type == ShapeType::Circle && end.velocity.norm() > 0.0) {
+    // Rolling down a slope that falls to the left means turning counter-clockwise.
+    run.rollingMismatch =
+        std::abs(end.velocity.norm() - end.angularVelocity * end.shape.radius) / end.velocity.norm();
+  }
+  return run;
+}
+
+}  // namespace
+
+TEST_CASE("the contact matrix equals the unit-impulse probe", "[friction][contact-matrix]") {
+  Body a = makeBody("a", BodyType::Dynamic, makeBox(1.2, 0.7), 2.0, Vec2(0.3, -0.2), 0.4);
+  Body b = makeBody("b", BodyType::Dynamic, makeCircle(0.45), 0.8, Vec2(0.9, 0.6), -1.1);
+  a.velocity = Vec2(0.5, -0.25);
+  a.angularVelocity = 1.5;
+  b.velocity = Vec2(-1.0, 0.3);
+  b.angularVelocity = -0.7;
+  const Vec2 point(0.71, 0.18);  // off both centres
+  const Vec2 normal = Vec2(0.6, 0.8);
+  const Mat2 matrix = contactMatrix(a, b, point, normal);
+  const Vec2 normalColumn = probe(a, b, point, normal, normal);
+  const Vec2 tangentColumn = probe(a, b, point, normal, leftPerpendicular(normal));
+  CHECK((matrix.col(0) - normalColumn).norm() < 1e-12);
+  CHECK((matrix.col(1) - tangentColumn).norm() < 1e-12);
+  CHECK(std::abs(matrix(0, 1) - matrix(1, 0)) < 1e-15);  // symmetric, as it must be
+
+  Body ground = makeBody("ground", BodyType::Static, makeBox(4.0, 1.0), 1.0, Vec2(0, -2), 0.2);
+  const Mat2 againstStatic = contactMatrix(ground, a, point, normal);
+  CHECK((againstStatic.col(0) - probe(ground, a, point, normal, normal)).norm() < 1e-12);
+}
+
+TEST_CASE("static friction holds a box on an incline with tan θ < μ", "[friction][static]") {
+  const double angle = degrees(20.0);  // tan θ = 0.36
+  const double friction = 0.5;
+  const SlopeRun run =
+      runOnSlope(lecture::boxOnSlope(Vec2(1.0, 0.5), angle, friction), angle, friction, 5.0);
+  std::cout << "figure: box on a 20 deg incline, mu 0.5: moved " << run.distance
+            << " m in 5 s\n";
+  CHECK(std::abs(run.distance) < 1e-3);
+}
+
+TEST_CASE("dynamic friction lets a box slide at g(sin θ − μ cos θ)", "[friction][dynamic]") {
+  const double angle = degrees(30.0);  // tan θ = 0.58
+  const double friction = 0.3;
+  const SlopeRun run =
+      runOnSlope(lecture::boxOnSlope(Vec2(1.0, 0.5), angle, friction), angle, friction, 3.0);
+  const double expected = lecture::kGravity * (std::sin(angle) - friction * std::cos(angle));
+  std::cout << "figure: box sliding on a 30 deg incline, mu 0.3: a = " << run.acceleration
+            << " m/s^2, analytic " << expected << "\n";
+  CHECK(run.acceleration == Approx(expected).epsilon(0.02));
+}
+
+TEST_CASE("a disk with enough friction rolls at (2/3) g sin θ", "[friction][rolling]") {
+  const double angle = degrees(20.0);
+  const double friction = 0.6;  // rolling needs μ ≥ tan θ / 3 = 0.12
+  const SlopeRun run =
+      runOnSlope(lecture::diskOnSlope(0.5, angle, friction), angle, friction, 3.0);
+  const double expected = 2.0 / 3.0 * lecture::kGravity * std::sin(angle);
+  std::cout << "figure: disk rolling on a 20 deg incline: a = " << run.acceleration
+            << " m/s^2, analytic " << expected << ", |v - w r|/|v| = " << run.rollingMismatch
+            << "\n";
+  CHECK(run.acceleration == Approx(expected).epsilon(0.02));
+  CHECK(run.rollingMismatch < 0.01);
+}

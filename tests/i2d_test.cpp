@@ -1,0 +1,224 @@
+// The i2d program as a user meets it: exit codes, the summary, the exact CSV, one-line errors,
+// and no half-written output file after any failure (docs/i2d.md).
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBinary = IMPULSE2D_BINARY_DIR "/apps/i2d";
+const std::string kScenes = IMPULSE2D_SOURCE_DIR "/demos/scenes/";
+const std::string kHeader = "step,t,body,x,y,angle_rad,vx,vy,omega_rad_s";
+
+/// A fresh directory under /tmp, removed with everything in it at the end of the test.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    std::string pattern = (fs::temp_directory_path() / "i2d_test.XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
+  }
+  ~TemporaryDirectory() { fs::remove_all(path_); }
+  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+  /// The names of the files in the directory.
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(path_)) {
+      names.push_back(entry.path().filename().string());
+    }
+    return names;
+  }
+
+ private:
+  fs::path path_;
+};
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> readLines(const std::string& path) {
+  std::istringstream text(readFile(path));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(text, line);) lines.push_back(line);
+  return lines;
+}
+
+struct Outcome {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+/// Runs i2d with the arguments (a shell word list) and collects its exit code and output.
+Outcome i2d(const std::string& arguments) {
+  const TemporaryDirectory streams;
+  const std::string command =
+      kBinary + " " + arguments + " >" + (streams / "out") + " 2>" + (streams / "err");
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(streams / "out"),
+          readFile(streams / "err")};
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+}  // namespace
+
+TEST_CASE("i2d --help and each command's --help say what it does", "[i2d][help]") {
+  const Outcome general = i2d("--help");
+  CHECK(general.exitCode == 0);
+  for (const char* topic : {"i2d run SCENE", "i2d check SCENE", "0  success", "1  failure",
+                            "2  bad command line", "3  invalid scene"}) {
+    CHECK(general.out.find(topic) != std::string::npos);
+  }
+  const Outcome run = i2d("run --help");
+  CHECK(run.exitCode == 0);
+  for (const char* option : {"--solver", "--steps", "--dt", "--set", "--csv", "--every", "--frames",
+                             "step,t,body,x,y,angle_rad,vx,vy,omega_rad_s"}) {
+    CHECK(run.out.find(option) != std::string::npos);
+  }
+  CHECK(i2d("check --help").out.find("usage: i2d check SCENE") == 0);
+}
+
+TEST_CASE("i2d run writes the exact CSV and prints the summary", "[i2d][run][csv]") {
+  const TemporaryDirectory directory;
+  const std::string csv = directory / "ball.csv";
+  const Outcome outcome = i2d("run " + kScenes + "bouncing_ball.toml --steps 10 --csv " + csv);
+  CHECK(outcome.exitCode == 0);
+  CHECK(outcome.err.empty());
+  for (const char* figure : {"steps", "simulated", "wall time", "µs per step", "contacts",
+                             "largest penetration", "kinetic", "potential"}) {
+    CHECK(outcome.out.find(figure) != std::string::npos);
+  }
+  const std::vector<std::string> lines = readLines(csv);
+  REQUIRE(lines.size() == 1 + 11);  // the header, then steps 0..10 of the one dynamic body
+  CHECK(lines[0] == kHeader);
+  CHECK(lines[1] == "0,0,ball,0,2.5,0,0,0,0");
+  CHECK(lines[11].rfind("10,", 0) == 0);
+  CHECK(directory.files() == std::vector<std::string>{"ball.csv"});
+}
+
+TEST_CASE("run --every K records every K-th step, step 0 and the last", "[i2d][run][csv]") {
+  const TemporaryDirectory directory;
+  const std::string csv = directory / "pyramid.csv";
+  const Outcome outcome = i2d("run " + kScenes + "pyramid.toml --steps=10 --every=4 --csv=" + csv);
+  CHECK(outcome.exitCode == 0);
+  const std::vector<std::string> lines = readLines(csv);
+  REQUIRE(lines.size() == 1 + 55 * 4);  // steps 0, 4, 8 and 10 of the 55 boxes, not the ground
+  CHECK(lines[1].rfind("0,0,box1,", 0) == 0);
+  CHECK(lines[1 + 55].rfind("4,", 0) == 0);
+  CHECK(lines[1 + 3 * 55].rfind("10,", 0) == 0);
+}
+
+TEST_CASE("run --solver, --dt and --set override the scene", "[i2d][run][set]") {
+  const TemporaryDirectory directory;
+  const std::string csv = directory / "ball.csv";
+  const Outcome outcome = i2d("run " + kScenes + "bouncing_ball.toml --steps 1 --dt 0.5 " +
+                              "--solver sequential --set solver.velocity_iterations=2 " +
+                              "--set 'world.gravity=[0, -2]' --csv " + csv);
+  CHECK(outcome.exitCode == 0);
+  CHECK(outcome.out.find("solver sequential") != std::string::npos);
+  // One step of semi-implicit Euler: v = g dt = -1, y = 2.5 + v dt = 2.
+  CHECK(readLines(csv).at(2) == "1,0.5,ball,0,2,0,0,-1,0");
+}
+
+TEST_CASE("a bad command line is one error line and exit code 2", "[i2d][errors]") {
+  const std::string scene = kScenes + "bouncing_ball.toml";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "error: no command given (see i2d --help)\n"},
+      {"fly", "error: unknown command 'fly' (see i2d --help)\n"},
+      {"run", "error: i2d run needs a SCENE file\n"},
+      {"run " + scene + " --fast",
+       "error: unknown option '--fast' for i2d run (see i2d run --help)\n"},
+      {"run " + scene + " --csv", "error: option --csv needs a value\n"},
+      {"run " + scene + " --steps -3", "error: option --steps needs an integer >= 0, not '-3'\n"},
+      {"run " + scene + " --dt 0", "error: option --dt needs a finite number > 0, not '0'\n"},
+      {"run " + scene + " --every 0", "error: option --every needs an integer >= 1, not '0'\n"},
+      {"run " + scene + " --solver fast",
+       "error: unknown solver 'fast' (known: micro, sequential, reference, box2d)\n"},
+      {"run " + scene + " --set world.dt=-1", "error: --set:1:10: 'dt' must be > 0, not -1\n"},
+      {"check " + scene + " " + scene,
+       "error: unexpected argument '" + scene + "': i2d check takes one SCENE\n"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    INFO("i2d " << arguments);
+    const Outcome outcome = i2d(arguments);
+    CHECK(outcome.exitCode == 2);
+    CHECK(outcome.err == message);
+  }
+}
+
+TEST_CASE("an invalid scene is one located error, exit code 3, and no CSV", "[i2d][errors]") {
+  const TemporaryDirectory directory;
+  const std::string scene = directory / "typo.toml";
+  writeFile(scene, "[[body]]\nshape = \"circle\"\nradius = 0.5\nfricton = 0.5\n");
+  const Outcome outcome = i2d("run " + scene + " --csv " + (directory / "out.csv"));
+  CHECK(outcome.exitCode == 3);
+  CHECK(outcome.out.empty());
+  CHECK(outcome.err.rfind("error: " + scene + ":4:1: unknown key 'fricton' in [[body]] (known: ",
+                          0) == 0);
+  CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+  CHECK(directory.files() == std::vector<std::string>{"typo.toml"});
+
+  const Outcome missing = i2d("check " + (directory / "none.toml"));
+  CHECK(missing.exitCode == 3);
+  CHECK(missing.err == "error: " + (directory / "none.toml") +
+                           ": cannot read the file: No such file or directory\n");
+}
+
+TEST_CASE("a CSV that cannot be written fails with exit code 1 and leaves nothing", "[i2d][csv]") {
+  const TemporaryDirectory directory;
+  const std::string scene = kScenes + "bouncing_ball.toml --steps 5 --csv ";
+  const Outcome noDirectory = i2d("run " + scene + (directory / "missing/out.csv"));
+  CHECK(noDirectory.exitCode == 1);
+  CHECK(noDirectory.err == "error: cannot write " + (directory / "missing/out.csv.tmp") +
+                               ": No such file or directory\n");
+
+  fs::create_directory(directory / "taken");
+  const Outcome isDirectory = i2d("run " + scene + (directory / "taken"));
+  CHECK(isDirectory.exitCode == 1);
+  CHECK(isDirectory.err == "error: cannot write " + (directory / "taken") + ": Is a directory\n");
+  CHECK(directory.files() == std::vector<std::string>{"taken"});
+}
+
+TEST_CASE("a state that becomes non-finite stops the run, keeping the rows so far",
+          "[i2d][errors][csv]") {
+  // Gravity of -1e308 m/s² over 1 s steps: step 1 reaches v = -1e308, step 2 overflows to -inf.
+  const TemporaryDirectory directory;
+  const std::string scene = directory / "overflow.toml";
+  writeFile(scene,
+            "[world]\ngravity = [0, -1e308]\ndt = 1\nsteps = 10\nsolver = \"micro\"\n"
+            "[[body]]\nname = \"rocket\"\nshape = \"circle\"\nradius = 1\n");
+  const std::string csv = directory / "overflow.csv";
+  const Outcome outcome = i2d("run " + scene + " --csv " + csv);
+  CHECK(outcome.exitCode == 1);
+  CHECK(outcome.err == "error: body rocket became non-finite at step 2\n");
+  const std::vector<std::string> lines = readLines(csv);
+  REQUIRE(lines.size() == 3);
+  CHECK(lines[0] == kHeader);
+  CHECK(lines[2] == "1,1,rocket,0,-1e+308,0,0,-1e+308,0");
+}
+
+TEST_CASE("i2d check prints the solver, settings and bodies", "[i2d][check]") {
+  const Outcome outcome = i2d("check " + kScenes + "bouncing_ball.toml");
+  CHECK(outcome.exitCode == 0);
+  for (const char* text : {"solver micro", "dt = ", "restitution_velocity_limit = ",
+                           "bodies 2 (1 static, 1 dynamic): 1 box 1 circle", "  ground: static box",
+                           "  ball: dynamic circle radius 0.5 m"}) {
+    INFO(text);
+    CHECK(outcome.out.find(text) != std::string::npos);
+  }
+}

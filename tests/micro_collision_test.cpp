@@ -1,0 +1,89 @@
+// The micro-collision resolver's own rules: the lecture's desired velocity change, worst contact
+// first, and penetration moved out without adding velocity.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "impulse2d/micro_collision.h"
+#include "lecture_scenes.h"
+
+using namespace impulse2d;
+
+namespace {
+
+/// Records every solver event of a step.
+struct EventLog : SolverObserver {
+  std::vector<SolverEvent> events;
+  void onSolverEvent(const SolverEvent& event, const std::vector<Body>&,
+                     const std::vector<Manifold>&) override {
+    events.push_back(event);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("the desired velocity change is −vs − c·(vs − vacc)", "[micro][acceleration]") {
+  const double dt = 1.0 / 60.0;
+  const double restitution = 0.5;
+  Scene scene = lecture::sceneWith("micro", dt);
+  scene.solverSettings.micro.lowerRestitutionAtLowSpeed = false;
+  scene.bodies.push_back(lecture::ground(0.0));
+  BodyDef ball = lecture::diskOnSlope(0.25, 0.0, 0.0, -0.001);  // 1 mm into the ground
+  ball.restitution = restitution;
+  ball.velocity = Vec2(0.0, -2.0);
+  scene.bodies.push_back(ball);
+
+  for (bool removeAcceleration : {true, false}) {
+    scene.solverSettings.micro.removeAccelerationVelocity = removeAcceleration;
+    auto world = buildWorld(scene);
+    EventLog log;
+    world->setObserver(&log);
+    world->step();
+    REQUIRE(!log.events.empty());
+    const double vs = -2.0 - lecture::kGravity * dt;  // separating velocity after gravity
+    const double vacc = removeAcceleration ? -lecture::kGravity * dt : 0.0;
+    CHECK(log.events[0].desiredChange == Approx(-vs - restitution * (vs - vacc)).epsilon(1e-12));
+    CHECK(world->bodies()[1].velocity.y() == Approx(-restitution * (vs - vacc)).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("velocity resolution takes the worst contact first", "[micro][worst-first]") {
+  Scene scene = lecture::sceneWith("micro", 1.0 / 60.0);
+  scene.bodies.push_back(lecture::ground(0.0));
+  BodyDef slow = lecture::diskOnSlope(0.25, 0.0, 0.0, -0.001);
+  slow.position.x() = -3.0;
+  slow.velocity = Vec2(0.0, -0.5);
+  BodyDef fast = slow;
+  fast.position.x() = 3.0;
+  fast.velocity = Vec2(0.0, -3.0);
+  scene.bodies.push_back(slow);
+  scene.bodies.push_back(fast);
+  auto world = buildWorld(scene);
+  EventLog log;
+  world->setObserver(&log);
+  world->step();
+  std::vector<double> velocityChanges;
+  for (const SolverEvent& event : log.events) {
+    if (event.phase == SolverEvent::Phase::Velocity) velocityChanges.push_back(event.desiredChange);
+  }
+  REQUIRE(velocityChanges.size() == 2);
+  CHECK(world->manifolds()[log.events[0].manifold].bodyB == 2);  // the fast ball first
+  CHECK(velocityChanges[0] > velocityChanges[1]);
+}
+
+TEST_CASE("penetration resolution moves bodies apart without changing velocity",
+          "[micro][penetration]") {
+  Scene scene = lecture::sceneWith("micro", 1.0 / 60.0);
+  scene.world.gravity = Vec2::Zero();
+  scene.bodies.push_back(lecture::ground(0.5));
+  scene.bodies.push_back(lecture::boxOnSlope(Vec2(1.0, 1.0), 0.0, 0.5, -0.05));  // 5 cm deep
+  auto world = buildWorld(scene);
+  world->step();
+  const Body& box = world->bodies()[1];
+  CHECK(box.velocity.norm() < 1e-12);
+  CHECK(box.angularVelocity == Approx(0.0).margin(1e-12));
+  // Flat on the ground: both corners equally deep, so the moves cancel in angle and lift it out.
+  CHECK(box.position.y() - 0.5 ==
+        Approx(0.0).margin(scene.solverSettings.micro.positionEpsilon));
+  CHECK(std::abs(box.angle) < 1e-9);
+}

@@ -1,0 +1,115 @@
+// The global reference: the Delassus matrix, exact reaction forces in a resting stack, Coulomb's
+// limit on a slope, and failures that are reported rather than returned.
+#include <catch2/catch.hpp>
+
+#include <Eigen/Eigenvalues>
+
+#include "impulse2d/reference_solver.h"
+#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/world.h"
+#include "solver_scenes.h"
+
+using namespace impulse2d;
+using namespace solvers;
+
+namespace {
+
+/// N. Sum over a manifold's points of normal (or tangent) impulse, over dt.
+double manifoldForce(const World& world, int index, bool tangent) {
+  const Manifold& manifold = world.manifolds()[static_cast<size_t>(index)];
+  double impulse = 0.0;
+  for (int i = 0; i < manifold.pointCount; ++i) {
+    impulse += tangent ? manifold.points[i].tangentImpulse : manifold.points[i].normalImpulse;
+  }
+  return impulse / world.settings().dt;
+}
+
+std::unique_ptr<World> boxOnSlope(double angle, double friction) {
+  Scene scene = lecture::sceneWith("reference", kDt);
+  scene.bodies.push_back(lecture::ground(friction, angle));
+  scene.bodies.push_back(lecture::boxOnSlope(Vec2(1.0, 1.0), angle, friction));
+  return buildWorld(scene);
+}
+
+ReferenceSolver& referenceOf(World& world) {
+  return dynamic_cast<ReferenceSolver&>(world.solver());
+}
+
+}  // namespace
+
+TEST_CASE("10-box stack: the reference's contact forces are the weights above, to 1e-6",
+          "[reference][stack][force]") {
+  constexpr int kBoxes = 10;
+  auto world = buildWorld(stackScene("reference", kBoxes, 0.6));
+  for (int step = 0; step < stepsIn(2.0); ++step) {
+    world->step();
+    const SolveReport report = world->solver().lastReport();
+    REQUIRE(report.converged);
+    REQUIRE(report.residual <= ReferenceSolverSettings{}.residualTolerance);
+    for (int level = 0; level < kBoxes; ++level) {
+      const double weightAbove = (kBoxes - level) * kBoxMass * kGravity;
+      INFO("level " << level << ", step " << step);
+      CHECK(contactForce(*world, level, level + 1) == Approx(weightAbove).epsilon(1e-6));
+    }
+  }
+}
+
+TEST_CASE(
+    "the Delassus matrix is symmetric, positive semi-definite, with the unit-impulse "
+    "responses on its diagonal",
+    "[reference][delassus]") {
+  auto world = buildWorld(pyramidScene("reference", 3, 0.6));
+  world->step();
+  const Eigen::MatrixXd& w = referenceOf(*world).delassusMatrix();
+  REQUIRE(w.rows() == 2 * contactPointCount(*world));
+  CHECK((w - w.transpose()).cwiseAbs().maxCoeff() < 1e-12);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(w);
+  CHECK(eigen.eigenvalues().minCoeff() > -1e-12);
+  int row = 0;
+  for (const Manifold& manifold : world->manifolds()) {
+    const Body& a = world->bodies()[static_cast<size_t>(manifold.bodyA)];
+    const Body& b = world->bodies()[static_cast<size_t>(manifold.bodyB)];
+    for (int i = 0; i < manifold.pointCount; ++i, row += 2) {
+      const Vec2& point = manifold.points[i].point;
+      CHECK(w(row, row) == Approx(unitImpulseResponse(a, b, point, manifold.normal)));
+      CHECK(w(row + 1, row + 1) == Approx(unitImpulseResponse(a, b, point, manifold.tangent())));
+    }
+  }
+}
+
+TEST_CASE("on a slope the reference gives N = m g cos θ, and friction m g sin θ or μN",
+          "[reference][friction]") {
+  constexpr double kFriction = 0.4;
+  for (double angle : {0.2, 0.6}) {
+    auto world = boxOnSlope(angle, kFriction);
+    runSteps(*world, 10);
+    const double mass = world->bodies()[1].mass;
+    const double normal = manifoldForce(*world, 0, false);
+    const double friction = std::abs(manifoldForce(*world, 0, true));
+    INFO("slope " << angle);
+    CHECK(normal == Approx(mass * lecture::kGravity * std::cos(angle)).epsilon(1e-9));
+    if (std::tan(angle) < kFriction) {
+      CHECK(friction == Approx(mass * lecture::kGravity * std::sin(angle)).epsilon(1e-9));
+    } else {
+      CHECK(friction == Approx(kFriction * normal).epsilon(1e-9));
+      CHECK(world->manifolds()[0].points[0].friction == FrictionState::Dynamic);
+    }
+  }
+}
+
+TEST_CASE("a solve that cannot finish is reported and thrown, never returned half done",
+          "[reference][failure]") {
+  Scene scene = stackScene("reference", 5, 0.6);
+  scene.solverSettings.reference.maxPivots = 2;
+  auto world = buildWorld(scene);
+  CHECK_THROWS_WITH(world->step(), Catch::Contains("pivot limit"));
+  CHECK_FALSE(world->solver().lastReport().converged);
+}
+
+TEST_CASE("a tolerance the answer cannot meet is reported", "[reference][failure]") {
+  Scene scene = stackScene("reference", 5, 0.6);
+  scene.solverSettings.reference.residualTolerance = -1.0;
+  auto world = buildWorld(scene);
+  CHECK_THROWS_WITH(world->step(), Catch::Contains("exceeds the tolerance"));
+  CHECK_FALSE(world->solver().lastReport().converged);
+}

@@ -1,0 +1,93 @@
+// Restitution: a ball dropped from h with restitution e rises to e²h; lowering restitution at low
+// speed lets it come to rest rather than bounce forever (lecture 3.6).
+#include <catch2/catch.hpp>
+
+#include <iostream>
+#include <vector>
+
+#include "lecture_scenes.h"
+
+using namespace impulse2d;
+
+namespace {
+
+constexpr double kRadius = 0.2;
+constexpr double kDropHeight = 1.0;  // m, of the ball's lowest point above the ground
+constexpr double kRestitution = 0.8;
+
+std::unique_ptr<World> ballWorld(double dt, const MicroCollisionSettings& micro) {
+  Scene scene = lecture::sceneWith("micro", dt);
+  scene.solverSettings.micro = micro;
+  scene.bodies.push_back(lecture::ground(0.5));
+  BodyDef ball = lecture::diskOnSlope(kRadius, 0.0, 0.5, kDropHeight);
+  ball.restitution = kRestitution;
+  scene.bodies.push_back(ball);
+  return buildWorld(scene);
+}
+
+/// Heights of the ball's lowest point at the top of each of the first `bounces` rebounds.
+std::vector<double> apexes(double dt, int bounces) {
+  auto world = ballWorld(dt, MicroCollisionSettings{});
+  std::vector<double> heights;
+  double previousVy = 0.0;
+  while (int(heights.size()) < bounces && world->stepCount() * dt < 20.0) {
+    world->step();
+    const Body& ball = world->bodies()[1];
+    if (previousVy > 0.0 && ball.velocity.y() <= 0.0) heights.push_back(ball.position.y() - kRadius);
+    previousVy = ball.velocity.y();
+  }
+  return heights;
+}
+
+double largestRatioError(const std::vector<double>& heights) {
+  double previous = kDropHeight;
+  double largest = 0.0;
+  for (double h : heights) {
+    largest = std::max(largest, std::abs(h / previous / (kRestitution * kRestitution) - 1.0));
+    previous = h;
+  }
+  return largest;
+}
+
+}  // namespace
+
+TEST_CASE("a ball rises to e²h on each of its first three bounces", "[restitution][micro]") {
+  const std::vector<double> fine = apexes(1.0 / 1000.0, 3);
+  REQUIRE(fine.size() == 3);
+  const double fineError = largestRatioError(fine);
+  const std::vector<double> coarse = apexes(1.0 / 60.0, 3);
+  REQUIRE(coarse.size() == 3);
+  const double coarseError = largestRatioError(coarse);
+  std::cout << "figure: bounce ratio error against e^2: " << fineError << " at dt = 1/1000 s, "
+            << coarseError << " at dt = 1/60 s; apexes at 1/1000:";
+  for (double h : fine) std::cout << " " << h;
+  std::cout << " m\n";
+  CHECK(fineError < 0.02);
+  // The error is the contact found up to v·dt late: it shrinks with the step.
+  CHECK(fineError < coarseError);
+}
+
+TEST_CASE("with the velocity limit the ball comes to rest", "[restitution][micro]") {
+  auto world = ballWorld(1.0 / 60.0, MicroCollisionSettings{});
+  while (world->stepCount() < 600) world->step();
+  const Body& ball = world->bodies()[1];
+  CHECK(std::abs(ball.velocity.y()) < 1e-3);
+  CHECK(ball.position.y() - kRadius == Approx(0.0).margin(1e-3));
+}
+
+TEST_CASE("without either fix the ball keeps bouncing on gravity's velocity",
+          "[restitution][micro]") {
+  MicroCollisionSettings settings;
+  settings.lowerRestitutionAtLowSpeed = false;
+  settings.removeAccelerationVelocity = false;
+  auto world = ballWorld(1.0 / 60.0, settings);
+  double highestLateBounce = 0.0;
+  while (world->stepCount() < 1200) {
+    world->step();
+    if (world->stepCount() > 1080) {
+      highestLateBounce = std::max(highestLateBounce, world->bodies()[1].velocity.y());
+    }
+  }
+  // Every resting step gravity's g·dt of closing speed comes back as e·g·dt of bounce.
+  CHECK(highestLateBounce > 0.5 * kRestitution * lecture::kGravity / 60.0);
+}

@@ -1,0 +1,211 @@
+// Sequential impulses: accumulated impulses, warm starting, the penetration bias, restitution,
+// speculative gaps, the position pass and the trace — each shown by the failure without it.
+#include <catch2/catch.hpp>
+
+#include "impulse2d/collide.h"
+#include "impulse2d/position_correction.h"
+#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/world.h"
+#include "solver_scenes.h"
+
+using namespace impulse2d;
+using namespace solvers;
+
+namespace {
+
+/// The top box's displacement from where it started, after `seconds`.
+double topBoxTravel(const Scene& scene, double seconds) {
+  auto world = buildWorld(scene);
+  runSteps(*world, stepsIn(seconds));
+  return (world->bodies().back().position - scene.bodies.back().position).norm();
+}
+
+/// A unit box whose bottom face sits `overlap` below the ground's top face, at rest.
+Scene overlappingBox(double overlap) {
+  Scene scene = groundScene("sequential", 0.6);
+  BodyDef box = unitBoxMaterial(0.6);
+  box.shape = makeBox(1.0, 1.0);
+  box.position = Vec2(0.0, 0.5 - overlap);
+  scene.bodies.push_back(box);
+  return scene;
+}
+
+/// A disk of radius 0.5 whose lowest point is `height` above the ground, moving at `velocity`.
+Scene diskAbove(double height, double velocity, double restitution) {
+  Scene scene = groundScene("sequential", 0.6);
+  scene.world.gravity = Vec2::Zero();
+  BodyDef disk = unitBoxMaterial(0.6);
+  disk.shape = makeCircle(0.5);
+  disk.position = Vec2(0.0, 0.5 + height);
+  disk.velocity = Vec2(0.0, velocity);
+  disk.restitution = restitution;
+  scene.bodies.push_back(disk);
+  return scene;
+}
+
+class CountingObserver : public SolverObserver {
+ public:
+  void onSolverEvent(const SolverEvent& event, const std::vector<Body>&,
+                     const std::vector<Manifold>&) override {
+    if (event.phase == SolverEvent::Phase::Velocity) ++velocityEvents;
+    lastSweep = std::max(lastSweep, event.iteration);
+  }
+  int velocityEvents = 0;
+  int lastSweep = -1;
+};
+
+}  // namespace
+
+TEST_CASE("10-box stack, warm started: every contact carries the weight above it within 2%",
+          "[sequential][stack][force][warm_starting]") {
+  constexpr int kBoxes = 10;
+  auto world = buildWorld(stackScene("sequential", kBoxes, 0.6));
+  runSteps(*world, stepsIn(1.0));
+  for (int step = 0; step < stepsIn(1.0); ++step) {
+    world->step();
+    for (int level = 0; level < kBoxes; ++level) {
+      const double weightAbove = (kBoxes - level) * kBoxMass * kGravity;
+      INFO("level " << level << ", step " << step);
+      CHECK(contactForce(*world, level, level + 1) == Approx(weightAbove).epsilon(0.02));
+    }
+  }
+}
+
+TEST_CASE("20-box stack stands with the defaults: the top moves < 1 cm from 1 s to 10 s",
+          "[sequential][stack][stability]") {
+  constexpr int kBoxes = 20;
+  const Scene scene = stackScene("sequential", kBoxes, 0.6);
+  auto world = buildWorld(scene);
+  runSteps(*world, stepsIn(1.0));
+  const Vec2 settled = world->bodies().back().position;
+  double largestMove = 0.0;
+  for (int step = 0; step < stepsIn(9.0); ++step) {
+    world->step();
+    largestMove = std::max(largestMove, (world->bodies().back().position - settled).norm());
+  }
+  CHECK(largestMove < 0.01);
+  // Each of the 20 contacts may overlap by up to the slop before the bias and the position
+  // pass act, so the top may sink at most 20 × slop.
+  const double sink = scene.bodies.back().position.y() - world->bodies().back().position.y();
+  CHECK(sink >= 0.0);
+  CHECK(sink < kBoxes * scene.solverSettings.sequential.allowedPenetration);
+}
+
+TEST_CASE("20-box stack without accumulated impulses or warm starting sinks or topples",
+          "[sequential][stack][accumulation][warm_starting]") {
+  constexpr int kBoxes = 20;
+  Scene scene = stackScene("sequential", kBoxes, 0.6);
+  const double slopAllowance = kBoxes * scene.solverSettings.sequential.allowedPenetration;
+  CHECK(topBoxTravel(scene, 10.0) < slopAllowance);
+  SECTION("without accumulation each impulse is clamped alone and cannot be taken back") {
+    scene.solverSettings.sequential.accumulateImpulses = false;
+    CHECK(topBoxTravel(scene, 10.0) > slopAllowance);
+  }
+  SECTION("without warm starting the weight never reaches the bottom within a step") {
+    scene.solverSettings.sequential.warmStarting = false;
+    CHECK(topBoxTravel(scene, 10.0) > slopAllowance);
+  }
+}
+
+TEST_CASE("the penetration bias pushes an overlap out to the slop; without it the overlap stays",
+          "[sequential][bias]") {
+  constexpr double kOverlap = 0.05;
+  Scene scene = overlappingBox(kOverlap);
+  scene.solverSettings.sequential.positionIterations = 0;
+  const double slop = scene.solverSettings.sequential.allowedPenetration;
+  SECTION("with the bias") {
+    auto world = buildWorld(scene);
+    runSteps(*world, stepsIn(2.0));
+    CHECK(largestPenetration(*world) < slop + 1e-4);
+  }
+  SECTION("without the bias") {
+    scene.solverSettings.sequential.penetrationBias = false;
+    auto world = buildWorld(scene);
+    runSteps(*world, stepsIn(2.0));
+    CHECK(largestPenetration(*world) > kOverlap - 1e-3);
+  }
+}
+
+TEST_CASE("the position pass removes penetration geometrically and adds no velocity",
+          "[sequential][position]") {
+  constexpr double kOverlap = 0.05;
+  const Scene scene = overlappingBox(kOverlap);
+  const SequentialImpulseSettings& settings = scene.solverSettings.sequential;
+  std::vector<Body> bodies = buildBodies(scene);
+  std::vector<Manifold> manifolds(1);
+  manifolds[0].bodyA = 0;
+  manifolds[0].bodyB = 1;
+  REQUIRE(collide(bodies[0], bodies[1], scene.world.contactMargin, manifolds[0]) == 2);
+  const StepContext context{bodies, manifolds, scene.world.dt};
+  SequentialImpulseSolver(settings).solvePositions(context);
+  // Both corners overlap alike, so each sweep removes exactly the factor of the excess.
+  const double remaining =
+      settings.allowedPenetration +
+      (kOverlap - settings.allowedPenetration) *
+          std::pow(1.0 - settings.positionCorrectionFactor, settings.positionIterations);
+  for (int i = 0; i < 2; ++i) {
+    CHECK(currentPenetration(bodies[0], bodies[1], manifolds[0], i) ==
+          Approx(remaining).epsilon(1e-9));
+  }
+  CHECK(bodies[1].velocity.norm() == 0.0);
+  CHECK(bodies[1].angularVelocity == 0.0);
+}
+
+TEST_CASE("restitution comes from the closing speed before the solve, none under the threshold",
+          "[sequential][restitution]") {
+  const double threshold = SequentialImpulseSettings{}.restitutionVelocityThreshold;
+  SECTION("a fast ball bounces at e × its closing speed") {
+    auto world = buildWorld(diskAbove(0.5, -5.0, 0.5));
+    runSteps(*world, stepsIn(1.0));
+    CHECK(world->bodies()[1].velocity.y() == Approx(2.5).epsilon(1e-9));
+  }
+  SECTION("a slow ball stops") {
+    auto world = buildWorld(diskAbove(0.5, -0.5 * threshold, 0.5));
+    runSteps(*world, stepsIn(2.0));
+    CHECK(std::abs(world->bodies()[1].velocity.y()) < 1e-12);
+  }
+}
+
+TEST_CASE("a gap is speculative: approach is allowed up to gap/dt, then the ball lands exactly",
+          "[sequential][speculative]") {
+  constexpr double kGap = 0.004;  // within the world's contact margin
+  SECTION("slow enough not to close the gap in a step: no impulse") {
+    auto world = buildWorld(diskAbove(kGap, -0.5 * kGap / kDt, 0.0));
+    world->step();
+    REQUIRE(world->manifolds().size() == 1);
+    CHECK(world->manifolds()[0].points[0].normalImpulse == 0.0);
+  }
+  SECTION("fast enough to close it: stopped touching, no bounce, no overlap") {
+    auto world = buildWorld(diskAbove(kGap, -3.0 * kGap / kDt, 0.0));
+    world->step();
+    CHECK(world->bodies()[1].position.y() - 0.5 == Approx(0.0).margin(1e-12));
+    CHECK(world->bodies()[1].velocity.y() == Approx(-kGap / kDt).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("friction is dynamic on a slope steeper than the friction angle, static below it",
+          "[sequential][friction]") {
+  for (const auto& [angle, expected] :
+       {std::pair{0.2, FrictionState::Static}, std::pair{0.6, FrictionState::Dynamic}}) {
+    Scene scene = lecture::sceneWith("sequential", kDt);
+    scene.bodies.push_back(lecture::ground(0.4, angle));
+    scene.bodies.push_back(lecture::boxOnSlope(Vec2(1.0, 1.0), angle, 0.4));
+    auto world = buildWorld(scene);
+    runSteps(*world, stepsIn(0.5));
+    INFO("slope " << angle);
+    REQUIRE(world->manifolds().size() == 1);
+    for (int i = 0; i < world->manifolds()[0].pointCount; ++i) {
+      CHECK(world->manifolds()[0].points[i].friction == expected);
+    }
+  }
+}
+
+TEST_CASE("an observer sees one event per point per sweep", "[sequential][trace]") {
+  auto world = buildWorld(stackScene("sequential", 3, 0.6));
+  CountingObserver observer;
+  world->setObserver(&observer);
+  world->step();
+  const int sweeps = SequentialImpulseSettings{}.velocityIterations;
+  CHECK(observer.velocityEvents == sweeps * contactPointCount(*world));
+  CHECK(observer.lastSweep == sweeps - 1);
+}

@@ -1,0 +1,176 @@
+// The scenes that ship in demos/scenes/: each loads, runs with its own solver, and shows its
+// concept within a tolerance a student can derive from the scene's numbers.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "impulse2d/scene_file.h"
+
+using namespace impulse2d;
+
+namespace {
+
+Scene shippedScene(const std::string& name) {
+  return loadSceneFile(IMPULSE2D_SOURCE_DIR "/demos/scenes/" + name + ".toml");
+}
+
+const Body& bodyNamed(const World& world, const std::string& name) {
+  for (const Body& body : world.bodies()) {
+    if (body.name == name) return body;
+  }
+  FAIL("no body named " << name);
+  return world.bodies().front();
+}
+
+const BodyDef& definitionNamed(const Scene& scene, const std::string& name) {
+  for (const BodyDef& body : scene.bodies) {
+    if (body.name == name) return body;
+  }
+  FAIL("no body named " << name);
+  return scene.bodies.front();
+}
+
+void runToEnd(World& world, const Scene& scene) {
+  for (int step = 0; step < scene.steps; ++step) world.step();
+}
+
+/// Unit vector down the slope of a ramp turned by `angle` (counter-clockwise, rising to the right).
+Vec2 downSlope(double angle) {
+  return Vec2(-std::cos(angle), -std::sin(angle));
+}
+
+/// The speed along the slope after the run, divided by the run's duration.
+double slopeAcceleration(const std::string& sceneName, const std::string& bodyName) {
+  const Scene scene = shippedScene(sceneName);
+  auto world = buildWorld(scene);
+  runToEnd(*world, scene);
+  const double angle = definitionNamed(scene, "ramp").angle;
+  return bodyNamed(*world, bodyName).velocity.dot(downSlope(angle)) /
+         (scene.steps * scene.world.dt);
+}
+
+}  // namespace
+
+TEST_CASE("demos/scenes holds one valid scene per concept, each saying what it shows",
+          "[scenes][shipped]") {
+  const std::set<std::string> concepts = {"resting_box",    "bouncing_ball", "incline_holds",
+                                          "incline_slides", "rolling_disk",  "stack",
+                                          "pyramid"};
+  std::set<std::string> found;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(IMPULSE2D_SOURCE_DIR "/demos/scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    found.insert(entry.path().stem().string());
+    const Scene scene = loadSceneFile(entry.path().string());
+    CHECK(scene.solver == "micro");
+    std::ifstream file(entry.path());
+    std::string firstLine;
+    std::getline(file, firstLine);
+    CHECK(firstLine.rfind("# ", 0) == 0);
+  }
+  CHECK(found == concepts);
+}
+
+TEST_CASE("resting_box: the dropped box ends at rest on the ground", "[scenes][resting]") {
+  const Scene scene = shippedScene("resting_box");
+  auto world = buildWorld(scene);
+  runToEnd(*world, scene);
+  const Body& box = bodyNamed(*world, "box");
+  // At rest: no point of the box (at most √2/2 m from its centre) moves faster than 1 mm/s.
+  CHECK(box.velocity.norm() + std::abs(box.angularVelocity) * std::sqrt(0.5) < 1e-3);
+  // On the ground: its centre half its height above y = 0, within the contact margin.
+  CHECK(std::abs(box.position.y() - 0.5) <= scene.world.contactMargin);
+  CHECK(std::abs(box.angle) < 1e-3);
+}
+
+TEST_CASE("bouncing_ball: the first bounce rises to e²h", "[scenes][restitution]") {
+  const Scene scene = shippedScene("bouncing_ball");
+  auto world = buildWorld(scene);
+  const BodyDef& ball = definitionNamed(scene, "ball");
+  const double radius = ball.shape.radius;
+  const double dropHeight = ball.position.y() - radius;
+  double previousVy = 0.0;
+  bool bounced = false;
+  double apex = -1.0;
+  for (int step = 0; step < scene.steps && apex < 0.0; ++step) {
+    world->step();
+    const Body& body = bodyNamed(*world, "ball");
+    if (body.velocity.y() > 0.0) bounced = true;
+    if (bounced && previousVy > 0.0 && body.velocity.y() <= 0.0) {
+      apex = body.position.y() - radius;
+    }
+    previousVy = body.velocity.y();
+  }
+  const double e = ball.restitution;
+  // The bounce happens somewhere within one step: at the impact speed √(2gh) the ball's height
+  // is uncertain by up to one step's travel, √(2gh)·dt (0.10 m here, 8% of e²h).
+  const double impactSpeed = std::sqrt(2.0 * -scene.world.gravity.y() * dropHeight);
+  CHECK(apex == Approx(e * e * dropHeight).margin(impactSpeed * scene.world.dt));
+}
+
+TEST_CASE("incline_holds: static friction keeps the box in place", "[scenes][friction][static]") {
+  const Scene scene = shippedScene("incline_holds");
+  const double angle = definitionNamed(scene, "ramp").angle;
+  REQUIRE(std::tan(angle) < definitionNamed(scene, "box").friction);
+  auto world = buildWorld(scene);
+  const Vec2 start = bodyNamed(*world, "box").position;
+  runToEnd(*world, scene);
+  CHECK((bodyNamed(*world, "box").position - start).norm() < 1e-3);
+}
+
+TEST_CASE("incline_slides: the box accelerates at g(sinθ − μcosθ)", "[scenes][friction][dynamic]") {
+  const Scene scene = shippedScene("incline_slides");
+  const double angle = definitionNamed(scene, "ramp").angle;
+  const double mu =
+      mixFriction(definitionNamed(scene, "ramp").friction, definitionNamed(scene, "box").friction);
+  REQUIRE(std::tan(angle) > mu);
+  const double g = -scene.world.gravity.y();
+  const double expected = g * (std::sin(angle) - mu * std::cos(angle));
+  CHECK(slopeAcceleration("incline_slides", "box") == Approx(expected).epsilon(0.03));
+}
+
+TEST_CASE("rolling_disk: the disk rolls without slipping at (2/3) g sinθ",
+          "[scenes][friction][rolling]") {
+  const Scene scene = shippedScene("rolling_disk");
+  const double angle = definitionNamed(scene, "ramp").angle;
+  const double g = -scene.world.gravity.y();
+  CHECK(slopeAcceleration("rolling_disk", "disk") ==
+        Approx(2.0 / 3.0 * g * std::sin(angle)).epsilon(0.03));
+
+  auto world = buildWorld(scene);
+  runToEnd(*world, scene);
+  const Body& disk = bodyNamed(*world, "disk");
+  // Rolling: the contact point is at rest, so the centre moves at ω r (clockwise going left).
+  const double speed = disk.velocity.dot(downSlope(angle));
+  CHECK(disk.angularVelocity * disk.shape.radius == Approx(speed).epsilon(0.01));
+}
+
+/// Every dynamic body ends within `drift` of where it started, and slower than `speed`.
+void checkStands(const std::string& sceneName, double drift, double speed) {
+  const Scene scene = shippedScene(sceneName);
+  auto world = buildWorld(scene);
+  const std::vector<Body> start = world->bodies();
+  runToEnd(*world, scene);
+  for (size_t i = 0; i < start.size(); ++i) {
+    const Body& body = world->bodies()[i];
+    if (body.isStatic()) continue;
+    INFO(sceneName << ": " << body.name);
+    CHECK((body.position - start[i].position).norm() < drift);
+    CHECK(body.velocity.norm() < speed);
+  }
+}
+
+TEST_CASE("stack: ten boxes stand for the whole run", "[scenes][stacking]") {
+  // Each of the ten contacts below the top box may sink by up to the contact margin.
+  const Scene scene = shippedScene("stack");
+  checkStands("stack", 10 * scene.world.contactMargin, 0.01);
+}
+
+TEST_CASE("pyramid: ten rows stand for the whole run", "[scenes][stacking]") {
+  const Scene scene = shippedScene("pyramid");
+  checkStands("pyramid", 10 * scene.world.contactMargin, 0.01);
+}
