@@ -46,9 +46,8 @@ int main() {
     if (step % kPrintEvery != 0) continue;
     const Body& a = fixed->bodies()[1];
     const Body& b = unfixed->bodies()[1];
-    std::printf("%6d %8.3f | %12.6f %12.6f | %12.6f %12.6f\n", step,
-                step * fixed->settings().dt, a.position.y() - 0.5, a.velocity.y(),
-                b.position.y() - 0.5, b.velocity.y());
+    std::printf("%6d %8.3f | %12.6f %12.6f | %12.6f %12.6f\n", step, step * fixed->settings().dt,
+                a.position.y() - 0.5, a.velocity.y(), b.position.y() - 0.5, b.velocity.y());
   }
   return 0;
 }

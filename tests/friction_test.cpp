@@ -15,7 +15,9 @@ namespace {
 constexpr double kDt = 1.0 / 60.0;
 constexpr double kPi = 3.14159265358979323846;
 
-double degrees(double d) { return d * kPi / 180.0; }
+double degrees(double d) {
+  return d * kPi / 180.0;
+}
 
 /// The text's unit-impulse probe: apply a unit impulse along `direction` (+ to B, − to A) on
 /// copies of the bodies and measure how the contact velocity (normal, tangent) changes.
@@ -27,8 +29,8 @@ Vec2 probe(Body a, Body b, const Vec2& point, const Vec2& normal, const Vec2& di
 }
 
 struct SlopeRun {
-  double distance = 0.0;      ///< m travelled down the slope
-  double acceleration = 0.0;  ///< m/s², from the velocity between t = 1 s and t = 3 s
+  double distance = 0.0;         ///< m travelled down the slope
+  double acceleration = 0.0;     ///< m/s², from the velocity between t = 1 s and t = 3 s
   double rollingMismatch = 0.0;  ///< |v − ω r| / |v| at the end, for disks
 };
 
@@ -53,8 +55,8 @@ SlopeRun runOnSlope(const BodyDef& body, double angle, double friction, double s
   run.acceleration = (speedAtThree - speedAtOne) / 2.0;
   if (end.shape.type == ShapeType::Circle && end.velocity.norm() > 0.0) {
     // Rolling down a slope that falls to the left means turning counter-clockwise.
-    run.rollingMismatch =
-        std::abs(end.velocity.norm() - end.angularVelocity * end.shape.radius) / end.velocity.norm();
+    run.rollingMismatch = std::abs(end.velocity.norm() - end.angularVelocity * end.shape.radius) /
+                          end.velocity.norm();
   }
   return run;
 }
@@ -87,8 +89,7 @@ TEST_CASE("static friction holds a box on an incline with tan θ < μ", "[fricti
   const double friction = 0.5;
   const SlopeRun run =
       runOnSlope(lecture::boxOnSlope(Vec2(1.0, 0.5), angle, friction), angle, friction, 5.0);
-  std::cout << "figure: box on a 20 deg incline, mu 0.5: moved " << run.distance
-            << " m in 5 s\n";
+  std::cout << "figure: box on a 20 deg incline, mu 0.5: moved " << run.distance << " m in 5 s\n";
   CHECK(std::abs(run.distance) < 1e-3);
 }
 
@@ -106,8 +107,7 @@ TEST_CASE("dynamic friction lets a box slide at g(sin θ − μ cos θ)", "[fric
 TEST_CASE("a disk with enough friction rolls at (2/3) g sin θ", "[friction][rolling]") {
   const double angle = degrees(20.0);
   const double friction = 0.6;  // rolling needs μ ≥ tan θ / 3 = 0.12
-  const SlopeRun run =
-      runOnSlope(lecture::diskOnSlope(0.5, angle, friction), angle, friction, 3.0);
+  const SlopeRun run = runOnSlope(lecture::diskOnSlope(0.5, angle, friction), angle, friction, 3.0);
   const double expected = 2.0 / 3.0 * lecture::kGravity * std::sin(angle);
   std::cout << "figure: disk rolling on a 20 deg incline: a = " << run.acceleration
             << " m/s^2, analytic " << expected << ", |v - w r|/|v| = " << run.rollingMismatch

@@ -33,8 +33,8 @@ TEST_CASE("free fall equals the discrete semi-implicit Euler solution", "[integr
     world->step();
     const Body& body = world->bodies()[0];
     CHECK((body.velocity - n * world->settings().dt * g).norm() < 1e-12);
-    CHECK((body.position - discretePosition(Vec2(0.0, 10.0), Vec2::Zero(), g,
-                                            world->settings().dt, n))
+    CHECK((body.position -
+           discretePosition(Vec2(0.0, 10.0), Vec2::Zero(), g, world->settings().dt, n))
               .norm() < 1e-12);
   }
 }

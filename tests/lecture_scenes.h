@@ -54,7 +54,9 @@ inline BodyDef diskOnSlope(double radius, double angle, double friction, double 
 }
 
 /// Unit vector down the slope of `ground(…, angle)` (for angle > 0 the slope falls to the left).
-inline Vec2 downSlope(double angle) { return Vec2(-std::cos(angle), -std::sin(angle)); }
+inline Vec2 downSlope(double angle) {
+  return Vec2(-std::cos(angle), -std::sin(angle));
+}
 
 inline Scene sceneWith(const std::string& solver, double dt) {
   Scene scene;

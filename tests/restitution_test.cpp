@@ -33,7 +33,8 @@ std::vector<double> apexes(double dt, int bounces) {
   while (int(heights.size()) < bounces && world->stepCount() * dt < 20.0) {
     world->step();
     const Body& ball = world->bodies()[1];
-    if (previousVy > 0.0 && ball.velocity.y() <= 0.0) heights.push_back(ball.position.y() - kRadius);
+    if (previousVy > 0.0 && ball.velocity.y() <= 0.0)
+      heights.push_back(ball.position.y() - kRadius);
     previousVy = ball.velocity.y();
   }
   return heights;

@@ -47,9 +47,8 @@ TEST_CASE("polygons that cannot be simulated are rejected with the reason", "[sh
   CHECK_THROWS_WITH(makePolygon({Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), Vec2(1, 1)}),
                     Contains("collinear"));
   CHECK_THROWS_WITH(makePolygon({Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)}), Contains("zero area"));
-  CHECK_THROWS_WITH(
-      makePolygon({Vec2(0, 0), Vec2(2, 0), Vec2(2, 2), Vec2(1, 0.5), Vec2(0, 2)}),
-      Contains("not convex at vertex 3"));
+  CHECK_THROWS_WITH(makePolygon({Vec2(0, 0), Vec2(2, 0), Vec2(2, 2), Vec2(1, 0.5), Vec2(0, 2)}),
+                    Contains("not convex at vertex 3"));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_WITH(makePolygon({Vec2(0, 0), Vec2(1, 0), Vec2(nan, 1)}), Contains("not finite"));
   CHECK_THROWS_AS(makeCircle(0.0), ShapeError);

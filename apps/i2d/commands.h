@@ -11,4 +11,10 @@ int runCommand(const RunOptions& options);
 /// `i2d check`: validates the scene and prints what it holds.
 int checkCommand(const CheckOptions& options);
 
+/// `i2d compare`: runs the scene once per panel and writes the panels side by side.
+int compareCommand(const CompareOptions& options);
+
+/// `i2d agree`: prints how far each method strays from Box2D on the scene.
+int agreeCommand(const AgreeOptions& options);
+
 }  // namespace i2d

@@ -3,21 +3,34 @@
 
 namespace i2d {
 
-const char* const kGeneralHelp = R"(i2d - run and check impulse2d scene files
+const char* const kGeneralHelp = R"(i2d - run, draw, compare and check impulse2d scene files
 
 usage:
-  i2d run SCENE [options]   run a scene, print a summary, optionally write its trajectory
-  i2d check SCENE           validate a scene and print what it holds
-  i2d --help                this text
-  i2d COMMAND --help        the options of one command
+  i2d run SCENE [options]       run a scene, print a summary; optionally write its trajectory
+                                (--csv), PNG frames and a contact sheet (--frames), or one
+                                frame per solver event of one step (--trace-step)
+  i2d compare SCENE [options]   run the scene once per solver (--solvers) or once per set of
+                                settings (--panel) and write the runs side by side as frames
+  i2d agree SCENE [options]     print how far each method strays from Box2D, as Markdown
+  i2d check SCENE               validate a scene and print what it holds
+  i2d --help                    this text
+  i2d COMMAND --help            the options of one command
 
-SCENE is a TOML scene file (docs/scene-format.md); demos/scenes/ holds one per lecture concept:
+SCENE is a TOML scene file (docs/scene-format.md); demos/scenes/ holds one per lecture concept.
+The solvers are micro, sequential, reference and box2d (Box2D 2.4, the behaviour reference).
+
+examples:
   i2d run demos/scenes/bouncing_ball.toml --csv ball.csv
+  i2d run demos/scenes/bouncing_ball.toml --frames frames --every 5
+  i2d run demos/scenes/resting_box.toml --trace-step 40 --frames frames
+  i2d compare demos/scenes/stack.toml --solvers micro,sequential,reference --frames frames
+  i2d agree demos/scenes/bouncing_ball.toml
+  scripts/demos                 every lecture demo, frames and sheets under frames/
 
 exit codes:
   0  success
-  1  failure while running: a body became non-finite, a file could not be written, or the
-     chosen solver or option is not built yet
+  1  failure while running: a body became non-finite, a file or frame could not be written,
+     --video without ffmpeg on PATH, a step with nothing to trace
   2  bad command line: unknown command or option, missing or malformed value, bad --set
   3  invalid scene: unreadable file, TOML syntax error, unknown key, wrong type, missing key,
      number out of range, degenerate or non-convex polygon, unknown solver or shape, empty file
@@ -28,8 +41,8 @@ errors are one line on stderr: "error: FILE:LINE:COLUMN: what is wrong" for a sc
 const char* const kRunHelp = R"(usage: i2d run SCENE [options]
 
 Runs the scene for its [world] steps and prints: steps and simulated time, wall time and
-microseconds per step, contact points and the largest penetration at the end, and the kinetic
-and potential energy at the start and the end.
+microseconds per step, contact points and the largest penetration at the end, the kinetic and
+potential energy at the start and the end, and what it wrote.
 
 options (a value follows the option or '=': --steps 100, --steps=100):
   --solver NAME         run this solver instead of the scene's: micro, sequential, reference,
@@ -42,8 +55,25 @@ options (a value follows the option or '=': --steps 100, --steps=100):
                         --solver, e.g. --set solver.velocity_iterations=20
                         --set world.gravity=[0,-1.62]; a bare word is a string
   --csv FILE            write the trajectory; FILE appears only when complete
-  --every K             record every K-th step in the CSV (K >= 1), plus step 0 and the last
-  --frames DIR          write PNG frames into DIR (not built yet)
+  --every K             CSV rows and frames every K-th step (K >= 1), plus step 0 and the last
+  --frames DIR          write PNG frames DIR/<scene>/<scene>_00000.png, _00001.png, ... (one
+                        per recorded step, numbered without gaps) and the contact sheet
+                        DIR/<scene>/<scene>_sheet.png; DIR's parent must exist
+  --video               also write DIR/<scene>/<scene>.mp4 in real time (needs --frames and
+                        ffmpeg on PATH)
+  --trace-step N        with --frames: run to step N (N >= 1) and draw one frame per solver
+                        event of that step, DIR/<scene>/<scene>_stepNNNNN_00000.png, ..., and
+                        its sheet <scene>_stepNNNNN_sheet.png; box2d cannot be traced
+  --no-overlays         frames show the bodies in their state colours only
+  --hide LIST           turn these overlays off, LIST a comma-separated list of
+                        rotation_marks, contact_points, contact_normals, normal_impulses,
+                        friction_impulses, velocities, heads_up, or all
+  --show LIST           turn these overlays on (velocities is off by default); the switches
+                        apply in the order given: --no-overlays --show normal_impulses
+
+frames: body colours say what a body does: grey static, sky blue flying, green resting,
+purple touching (rolling, bouncing), orange sliding. Blue arrows are normal impulses, purple
+and crimson arrows friction impulses that held (static) and slid (dynamic).
 
 CSV: the header is exactly
   step,t,body,x,y,angle_rad,vx,vy,omega_rad_s
@@ -54,7 +84,62 @@ omega in rad/s, counter-clockwise.
 
 If a body's state becomes non-finite the run stops with
   error: body NAME became non-finite at step N
-and exit code 1, keeping the CSV rows of the steps before.
+and exit code 1, keeping the CSV rows, frames and sheet of the steps before.
+
+exit codes: 0 success, 1 failure while running (non-finite state, unwritable file or frame
+directory, --video without ffmpeg), 2 bad command line, 3 invalid scene.
+)";
+
+const char* const kCompareHelp = R"(usage: i2d compare SCENE (--solvers LIST | --panel SPEC...) --frames DIR [options]
+
+Runs the scene once per panel, all panels in lockstep, and writes their frames side by side,
+each under a bar with its label, all drawn with one camera:
+  DIR/<scene>/<scene>_compare_00000.png, ...   and   DIR/<scene>/<scene>_compare_sheet.png
+then prints each panel's energies at the end.
+
+panels (one of the two):
+  --solvers LIST        one panel per solver, labelled with its name, LIST comma-separated:
+                        micro,sequential,reference,box2d
+  --panel 'LABEL: SECTION.KEY=VALUE; SECTION.KEY=VALUE'
+                        one panel, repeatable: the scene with these --set changes, labelled
+                        LABEL; the changes after ':' are separated by ';' and may be left
+                        out. For a feature switch, one panel with it on, one with it off:
+                          --panel 'removal on: solver.remove_acceleration_velocity=true'
+                          --panel 'removal off: solver.remove_acceleration_velocity=false'
+                        A panel can switch solver: --panel 'sequential: world.solver=sequential'
+
+options (a value follows the option or '=': --steps 100, --steps=100):
+  --frames DIR          where the frames go (required)
+  --every K             a frame every K-th step (K >= 1), plus step 0 and the last
+  --steps N, --dt S     as for i2d run, for every panel
+  --solver NAME         the solver of every --panel panel, instead of the scene's
+  --set SECTION.KEY=VALUE
+                        a change for every panel, applied before the panel's own
+  --video, --no-overlays, --hide LIST, --show LIST
+                        as for i2d run
+
+Each panel's scene is: the file, --solver (or the panel's solver), each --set, the panel's
+changes, then --steps and --dt.
+
+exit codes: 0 success, 1 failure while running (a panel became non-finite, unwritable frame
+directory, --video without ffmpeg), 2 bad command line, 3 invalid scene.
+)";
+
+const char* const kAgreeHelp = R"(usage: i2d agree SCENE [options]
+
+Runs the scene in Box2D and in each of our methods, one step of each in turn, and prints as
+Markdown how far each method strays from Box2D: a summary table (time to rest, drift since
+1 s, largest differences) and one table per dynamic body (final height, slide, apex after the
+first bounce, position and angle difference from Box2D at the end and at most). Read the
+position differences against Box2D's 0.01 m polygon skin (docs/box2d-reference.md): a box on
+the ground sits 0.015-0.02 m higher in Box2D, and that is agreement.
+
+options (a value follows the option or '=': --steps 100, --steps=100):
+  --solvers LIST        the methods to measure, comma-separated (default
+                        micro,sequential,reference); Box2D is always the reference
+  --summary             the summary table only (for scenes of many bodies)
+  --steps N, --dt S, --set SECTION.KEY=VALUE
+                        as for i2d run
 
 exit codes: 0 success, 1 failure while running, 2 bad command line, 3 invalid scene.
 )";

@@ -6,5 +6,7 @@ namespace i2d {
 extern const char* const kGeneralHelp;
 extern const char* const kRunHelp;
 extern const char* const kCheckHelp;
+extern const char* const kCompareHelp;
+extern const char* const kAgreeHelp;
 
 }  // namespace i2d

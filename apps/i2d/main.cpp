@@ -37,6 +37,14 @@ int dispatch(const std::string& command, const std::vector<std::string>& argumen
     if (asksForHelp(arguments)) return printHelp(i2d::kCheckHelp);
     return i2d::checkCommand(i2d::parseCheckOptions(arguments));
   }
+  if (command == "compare") {
+    if (asksForHelp(arguments)) return printHelp(i2d::kCompareHelp);
+    return i2d::compareCommand(i2d::parseCompareOptions(arguments));
+  }
+  if (command == "agree") {
+    if (asksForHelp(arguments)) return printHelp(i2d::kAgreeHelp);
+    return i2d::agreeCommand(i2d::parseAgreeOptions(arguments));
+  }
   if (command == "--help" || command == "-h" || command == "help") {
     return printHelp(i2d::kGeneralHelp);
   }

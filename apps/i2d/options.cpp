@@ -1,6 +1,7 @@
-// Parsing the options of `i2d run` and `i2d check`.
+// Parsing the options of the i2d commands.
 #include "options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -8,9 +9,12 @@
 #include <utility>
 
 #include "failures.h"
+#include "impulse2d/box2d/box2d_simulation.h"
 
 namespace i2d {
 namespace {
+
+using impulse2d::render::Overlays;
 
 /// An argument list read front to back; options find their value in "--name=value" or next.
 class Arguments {
@@ -36,6 +40,12 @@ class Arguments {
     }
     if (value.empty()) throw UsageError("option " + option + " needs a value");
     return value;
+  }
+  /// Checks that the switch just taken was not given "=value".
+  void noValue(const std::string& option) {
+    if (std::exchange(inlineValue_, std::nullopt)) {
+      throw UsageError("option " + option + " takes no value");
+    }
   }
 
  private:
@@ -64,21 +74,102 @@ double parsePositive(const std::string& text, const std::string& option) {
   return value;
 }
 
+std::string trim(const std::string& text) {
+  const size_t first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+/// "a,b,c" -> {"a", "b", "c"}, each trimmed; empty items are an error.
+std::vector<std::string> splitList(const std::string& text, char separator,
+                                   const std::string& option) {
+  std::vector<std::string> items;
+  size_t begin = 0;
+  while (begin <= text.size()) {
+    const size_t end = std::min(text.find(separator, begin), text.size());
+    items.push_back(trim(text.substr(begin, end - begin)));
+    if (items.back().empty()) throw UsageError("option " + option + " has an empty item");
+    begin = end + 1;
+  }
+  return items;
+}
+
+/// Every name makeSimulation accepts, as "a, b, c".
+std::string knownSolvers() {
+  std::string names;
+  for (const std::string& name : impulse2d::simulationNames()) {
+    names += (names.empty() ? "" : ", ") + name;
+  }
+  return names;
+}
+
+/// A solver name makeSimulation accepts; a usage error naming them all otherwise.
+std::string checkSolver(const std::string& name) {
+  const std::vector<std::string> known = impulse2d::simulationNames();
+  if (std::find(known.begin(), known.end(), name) == known.end()) {
+    throw UsageError("unknown solver '" + name + "' (known: " + knownSolvers() + ")");
+  }
+  return name;
+}
+
+/// The overlay switches by name: the snake_case names of RenderSettings::overlays.
+const std::map<std::string, bool Overlays::*>& overlayFields() {
+  static const std::map<std::string, bool Overlays::*> fields = {
+      {"rotation_marks", &Overlays::rotationMarks},
+      {"contact_points", &Overlays::contactPoints},
+      {"contact_normals", &Overlays::contactNormals},
+      {"normal_impulses", &Overlays::normalImpulses},
+      {"friction_impulses", &Overlays::frictionImpulses},
+      {"velocities", &Overlays::velocities},
+      {"heads_up", &Overlays::headsUp},
+  };
+  return fields;
+}
+
+/// --show or --hide LIST: turns the named overlays (or "all") on or off.
+void switchOverlays(Overlays& overlays, const std::string& list, bool on,
+                    const std::string& option) {
+  for (const std::string& name : splitList(list, ',', option)) {
+    if (name == "all") {
+      for (const auto& [field, member] : overlayFields()) overlays.*member = on;
+      continue;
+    }
+    const auto field = overlayFields().find(name);
+    if (field == overlayFields().end()) {
+      std::string known = "all";
+      for (const auto& [knownName, member] : overlayFields()) known += ", " + knownName;
+      throw UsageError("unknown overlay '" + name + "' for " + option + " (known: " + known + ")");
+    }
+    overlays.*(field->second) = on;
+  }
+}
+
 using OptionHandler = std::function<void(const std::string& value)>;
+using SwitchHandler = std::function<void()>;
+
+/// The options of a command: those that take a value and the switches that take none.
+struct Handlers {
+  std::map<std::string, OptionHandler> options;
+  std::map<std::string, SwitchHandler> switches;
+};
 
 /// Reads options by their handlers and the one positional argument, the scene.
 void parse(const std::vector<std::string>& arguments, const std::string& command,
-           const std::map<std::string, OptionHandler>& handlers, std::string& scenePath) {
+           const Handlers& handlers, std::string& scenePath) {
   Arguments reader(arguments);
   while (!reader.done()) {
     const std::string argument = reader.take();
     if (argument.size() > 1 && argument[0] == '-') {
-      const auto handler = handlers.find(argument);
-      if (handler == handlers.end()) {
+      if (const auto handler = handlers.options.find(argument); handler != handlers.options.end()) {
+        handler->second(reader.value(argument));
+      } else if (const auto flag = handlers.switches.find(argument);
+                 flag != handlers.switches.end()) {
+        reader.noValue(argument);
+        flag->second();
+      } else {
         throw UsageError("unknown option '" + argument + "' for i2d " + command + " (see i2d " +
                          command + " --help)");
       }
-      handler->second(reader.value(argument));
     } else if (scenePath.empty()) {
       scenePath = argument;
     } else {
@@ -89,28 +180,129 @@ void parse(const std::vector<std::string>& arguments, const std::string& command
   if (scenePath.empty()) throw UsageError("i2d " + command + " needs a SCENE file");
 }
 
+/// --steps, --dt and --set; --solver too when the command runs one solver.
+void addSceneHandlers(Handlers& handlers, SceneOptions& options, bool withSolver) {
+  if (withSolver) {
+    handlers.options["--solver"] = [&](const std::string& value) {
+      options.solver = checkSolver(value);
+    };
+  }
+  handlers.options["--steps"] = [&](const std::string& value) {
+    options.steps = parseInteger(value, "--steps", 0);
+  };
+  handlers.options["--dt"] = [&](const std::string& value) {
+    options.dt = parsePositive(value, "--dt");
+  };
+  handlers.options["--set"] = [&](const std::string& value) { options.settings.push_back(value); };
+}
+
+/// --frames, --every, --video and the overlay switches.
+void addFrameHandlers(Handlers& handlers, FrameOptions& options, int& every) {
+  handlers.options["--frames"] = [&](const std::string& value) { options.directory = value; };
+  handlers.options["--every"] = [&](const std::string& value) {
+    every = parseInteger(value, "--every", 1);
+  };
+  handlers.switches["--video"] = [&] { options.video = true; };
+  handlers.switches["--no-overlays"] = [&] {
+    switchOverlays(options.overlays, "all", false, "--no-overlays");
+  };
+  handlers.options["--hide"] = [&](const std::string& value) {
+    switchOverlays(options.overlays, value, false, "--hide");
+  };
+  handlers.options["--show"] = [&](const std::string& value) {
+    switchOverlays(options.overlays, value, true, "--show");
+  };
+}
+
+/// Switches and per-step output need a frame directory to write into.
+void requireFrames(const FrameOptions& frames, const std::string& what) {
+  if (!frames.directory) throw UsageError(what + " needs --frames DIR");
+}
+
+std::vector<std::string> parseSolverList(const std::string& value) {
+  std::vector<std::string> solvers = splitList(value, ',', "--solvers");
+  for (const std::string& solver : solvers) checkSolver(solver);
+  return solvers;
+}
+
 }  // namespace
+
+PanelOption parsePanel(const std::string& text) {
+  const size_t colon = text.find(':');
+  PanelOption panel;
+  panel.label = trim(text.substr(0, colon));
+  if (panel.label.empty()) {
+    throw UsageError("option --panel needs 'LABEL: section.key=value; ...', not '" + text + "'");
+  }
+  const std::string assignments = colon == std::string::npos ? "" : trim(text.substr(colon + 1));
+  if (!assignments.empty()) panel.settings = splitList(assignments, ';', "--panel");
+  return panel;
+}
 
 RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
   RunOptions options;
-  const std::map<std::string, OptionHandler> handlers = {
-      {"--solver", [&](const std::string& value) { options.solver = value; }},
-      {"--steps",
-       [&](const std::string& value) { options.steps = parseInteger(value, "--steps", 0); }},
-      {"--dt", [&](const std::string& value) { options.dt = parsePositive(value, "--dt"); }},
-      {"--set", [&](const std::string& value) { options.settings.push_back(value); }},
-      {"--csv", [&](const std::string& value) { options.csvPath = value; }},
-      {"--every",
-       [&](const std::string& value) { options.every = parseInteger(value, "--every", 1); }},
-      {"--frames", [&](const std::string& value) { options.framesDirectory = value; }},
+  Handlers handlers;
+  addSceneHandlers(handlers, options.scene, true);
+  addFrameHandlers(handlers, options.frames, options.every);
+  handlers.options["--csv"] = [&](const std::string& value) { options.csvPath = value; };
+  handlers.options["--trace-step"] = [&](const std::string& value) {
+    options.traceStep = parseInteger(value, "--trace-step", 1);
   };
-  parse(arguments, "run", handlers, options.scenePath);
+  parse(arguments, "run", handlers, options.scene.scenePath);
+  if (options.frames.video) requireFrames(options.frames, "--video");
+  if (options.traceStep) requireFrames(options.frames, "--trace-step");
+  if (options.traceStep && (options.csvPath || options.frames.video)) {
+    throw UsageError("--trace-step writes trace frames only; leave out --csv and --video");
+  }
   return options;
 }
 
 CheckOptions parseCheckOptions(const std::vector<std::string>& arguments) {
   CheckOptions options;
   parse(arguments, "check", {}, options.scenePath);
+  return options;
+}
+
+CompareOptions parseCompareOptions(const std::vector<std::string>& arguments) {
+  CompareOptions options;
+  Handlers handlers;
+  addSceneHandlers(handlers, options.scene, true);
+  addFrameHandlers(handlers, options.frames, options.every);
+  bool bySolver = false;
+  bool byPanel = false;
+  handlers.options["--solvers"] = [&](const std::string& value) {
+    for (const std::string& solver : parseSolverList(value)) {
+      options.panels.push_back({solver, solver, {}});
+    }
+    bySolver = true;
+  };
+  handlers.options["--panel"] = [&](const std::string& value) {
+    options.panels.push_back(parsePanel(value));
+    byPanel = true;
+  };
+  parse(arguments, "compare", handlers, options.scene.scenePath);
+  if (options.panels.empty()) throw UsageError("i2d compare needs --solvers or --panel");
+  if (bySolver && byPanel) {
+    throw UsageError("i2d compare takes either --solvers or --panel, not both");
+  }
+  requireFrames(options.frames, "i2d compare");
+  return options;
+}
+
+AgreeOptions parseAgreeOptions(const std::vector<std::string>& arguments) {
+  AgreeOptions options;
+  options.solvers = impulse2d::solverNames();
+  Handlers handlers;
+  addSceneHandlers(handlers, options.scene, false);
+  handlers.options["--solvers"] = [&](const std::string& value) {
+    options.solvers = parseSolverList(value);
+    if (std::find(options.solvers.begin(), options.solvers.end(), impulse2d::kBox2dName) !=
+        options.solvers.end()) {
+      throw UsageError("--solvers of i2d agree lists our methods; box2d is always the reference");
+    }
+  };
+  handlers.switches["--summary"] = [&] { options.summaryOnly = true; };
+  parse(arguments, "agree", handlers, options.scene.scenePath);
   return options;
 }
 

@@ -1,29 +1,70 @@
 // The command line of each i2d command, parsed into plain options. Options take their value as
-// the next argument or after '=' (--steps 100, --steps=100); malformed ones throw UsageError.
+// the next argument or after '=' (--steps 100, --steps=100); switches (--video) take none;
+// malformed options throw UsageError.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "impulse2d/render/render_settings.h"
+
 namespace i2d {
 
-struct RunOptions {
+/// What changes the scene before it runs: applied as --solver, each --set, --steps, --dt.
+struct SceneOptions {
   std::string scenePath;
-  std::optional<std::string> solver;   ///< --solver: replaces the scene's solver
-  std::optional<int> steps;            ///< --steps: replaces [world] steps
-  std::optional<double> dt;            ///< --dt: replaces [world] dt (s)
-  std::vector<std::string> settings;   ///< --set section.key=value, applied in order
+  std::optional<std::string> solver;  ///< --solver: replaces the scene's solver
+  std::optional<int> steps;           ///< --steps: replaces [world] steps
+  std::optional<double> dt;           ///< --dt: replaces [world] dt (s)
+  std::vector<std::string> settings;  ///< --set section.key=value, applied in order
+};
+
+/// Where PNG frames go and what they show.
+struct FrameOptions {
+  std::optional<std::string> directory;  ///< --frames: frames go to DIRECTORY/<scene>/
+  bool video = false;                    ///< --video: an MP4 of the frames through ffmpeg
+  impulse2d::render::Overlays overlays;  ///< --no-overlays, --hide, --show
+};
+
+struct RunOptions {
+  SceneOptions scene;
+  FrameOptions frames;
   std::optional<std::string> csvPath;  ///< --csv: the trajectory file
-  int every = 1;                       ///< --every: record every K-th step, step 0 and the last
-  std::optional<std::string> framesDirectory;  ///< --frames: PNG frames
+  int every = 1;                       ///< --every: CSV rows and frames every K-th step
+  std::optional<int> traceStep;        ///< --trace-step: one frame per solver event of step N
 };
 
 struct CheckOptions {
   std::string scenePath;
 };
 
+/// One panel of `i2d compare`: a label and the scene changes that make it differ.
+struct PanelOption {
+  std::string label;
+  std::optional<std::string> solver;  ///< from --solvers
+  std::vector<std::string> settings;  ///< from --panel 'LABEL: section.key=value; ...'
+};
+
+struct CompareOptions {
+  SceneOptions scene;
+  FrameOptions frames;
+  std::vector<PanelOption> panels;  ///< from --solvers or each --panel, left to right
+  int every = 1;                    ///< --every: a frame every K-th step
+};
+
+struct AgreeOptions {
+  SceneOptions scene;
+  std::vector<std::string> solvers;  ///< --solvers: the methods measured against Box2D
+  bool summaryOnly = false;          ///< --summary: the summary table without the body tables
+};
+
 RunOptions parseRunOptions(const std::vector<std::string>& arguments);
 CheckOptions parseCheckOptions(const std::vector<std::string>& arguments);
+CompareOptions parseCompareOptions(const std::vector<std::string>& arguments);
+AgreeOptions parseAgreeOptions(const std::vector<std::string>& arguments);
+
+/// The panel of `--panel 'LABEL: section.key=value; section.key=value'` (assignments optional).
+PanelOption parsePanel(const std::string& text);
 
 }  // namespace i2d

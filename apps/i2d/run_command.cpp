@@ -1,5 +1,5 @@
-// `i2d run`: load the scene, apply the command line's overrides, step, record, summarise.
-#include <algorithm>
+// `i2d run`: load the scene, apply the command line's overrides, step, record, summarise; or,
+// with --trace-step, draw one frame per solver event of one step.
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -8,8 +8,10 @@
 #include "commands.h"
 #include "csv_writer.h"
 #include "failures.h"
-#include "impulse2d/scene_file.h"
-#include "simulation_factory.h"
+#include "frame_output.h"
+#include "impulse2d/box2d/box2d_simulation.h"
+#include "impulse2d/render/trace.h"
+#include "scene_setup.h"
 #include "summary.h"
 
 namespace i2d {
@@ -19,73 +21,96 @@ using impulse2d::Body;
 using impulse2d::Scene;
 using impulse2d::Simulation;
 
-/// --solver, then each --set in order, then --steps and --dt: the most explicit option wins.
-void applyOverrides(const RunOptions& options, Scene& scene) {
-  if (options.solver) {
-    const std::vector<std::string> known = impulse2d::sceneSolverNames();
-    if (std::find(known.begin(), known.end(), *options.solver) == known.end()) {
-      std::string names;
-      for (const std::string& name : known) names += (names.empty() ? "" : ", ") + name;
-      throw UsageError("unknown solver '" + *options.solver + "' (known: " + names + ")");
+/// What a run writes as it goes: the CSV and the frames, each when asked for.
+struct Recorders {
+  std::unique_ptr<CsvWriter> csv;
+  std::unique_ptr<FrameRecorder> frames;
+  int every = 1;
+
+  void record(const Simulation& simulation, long lastStep) {
+    const long step = simulation.stepCount();
+    if (csv && isRecorded(step, lastStep, every)) {
+      csv->writeStep(step, double(step) * simulation.settings().dt, simulation.bodies());
     }
-    scene.solver = *options.solver;
+    if (frames) frames->record(simulation, lastStep);
   }
-  for (const std::string& assignment : options.settings) {
-    try {
-      impulse2d::applySetting(scene, assignment);
-    } catch (const impulse2d::SceneError& error) {
-      throw UsageError(error.what());
-    }
+  /// Commits the CSV and writes the sheet (and video); returns the summary lines of the frames.
+  std::vector<std::string> finish(double dt) {
+    if (csv) csv->commit();
+    return frames ? frames->finish(dt) : std::vector<std::string>{};
   }
-  if (options.steps) scene.steps = *options.steps;
-  if (options.dt) scene.world.dt = *options.dt;
-}
+};
 
 bool isFinite(const Body& body) {
   return body.position.allFinite() && std::isfinite(body.angle) && body.velocity.allFinite() &&
          std::isfinite(body.angularVelocity);
 }
 
-/// Stops the run at the first body whose state overflowed, keeping the rows recorded so far.
-void stopIfNonFinite(const Simulation& simulation, CsvWriter* csv) {
+/// Stops the run at the first body whose state overflowed, keeping what was recorded so far.
+void stopIfNonFinite(const Simulation& simulation, Recorders& recorders) {
   for (const Body& body : simulation.bodies()) {
     if (body.isStatic() || isFinite(body)) continue;
-    if (csv) csv->commit();
+    recorders.finish(simulation.settings().dt);
     throw RunFailure("body " + body.name + " became non-finite at step " +
                      std::to_string(simulation.stepCount()));
   }
 }
 
-bool isRecorded(long step, long lastStep, int every) {
-  return step % every == 0 || step == lastStep;
-}
-
-/// Steps the simulation, recording into the CSV; returns the seconds spent stepping.
-double runSteps(Simulation& simulation, long steps, int every, CsvWriter* csv) {
-  const double dt = simulation.settings().dt;
-  if (csv) csv->writeStep(0, 0.0, simulation.bodies());
+/// Steps the simulation, recording as it goes; returns the seconds spent stepping.
+double runSteps(Simulation& simulation, long steps, Recorders& recorders) {
+  recorders.record(simulation, steps);
   std::chrono::steady_clock::duration stepping{};
   for (long step = 1; step <= steps; ++step) {
     const auto begin = std::chrono::steady_clock::now();
     simulation.step();
     stepping += std::chrono::steady_clock::now() - begin;
-    stopIfNonFinite(simulation, csv);
-    if (csv && isRecorded(step, steps, every)) {
-      csv->writeStep(step, double(step) * dt, simulation.bodies());
-    }
+    stopIfNonFinite(simulation, recorders);
+    recorders.record(simulation, steps);
   }
   return std::chrono::duration<double>(stepping).count();
+}
+
+Recorders openRecorders(const RunOptions& options, const Scene& scene) {
+  checkVideoPossible(options.frames);
+  Recorders recorders;
+  recorders.every = options.every;
+  if (options.frames.directory) {
+    recorders.frames = std::make_unique<FrameRecorder>(options.frames, scene, options.every);
+  }
+  if (options.csvPath) recorders.csv = std::make_unique<CsvWriter>(*options.csvPath);
+  return recorders;
+}
+
+/// --trace-step N: runs to step N and draws each solver event of it, then its sheet.
+int traceCommand(const RunOptions& options, const Scene& scene, Simulation& simulation) {
+  if (simulation.solverName() == impulse2d::kBox2dName) {
+    throw RunFailure("solver box2d reports no solver events, so it cannot be traced; trace "
+                     "micro, sequential or reference");
+  }
+  const long step = *options.traceStep;
+  const impulse2d::render::RenderSettings settings = renderSettings(options.frames);
+  const impulse2d::render::FrameRenderer renderer(sceneCamera(scene, settings), scene.name,
+                                                  settings);
+  const impulse2d::render::FrameWriter trace =
+      impulse2d::render::traceStep(simulation, step, renderer, *options.frames.directory);
+  if (trace.frameCount() == 0) {
+    throw RunFailure("step " + std::to_string(step) +
+                     " resolved no contacts, so it has no solver events to draw; trace a step "
+                     "with contacts");
+  }
+  std::cout << "scene        " << scene.name << " (solver " << simulation.solverName() << ")\n"
+            << "trace        step " << step << ": " << trace.frameCount() << " solver events\n";
+  for (const std::string& line : describeFrames(trace)) std::cout << line << "\n";
+  return kSuccess;
 }
 
 }  // namespace
 
 int runCommand(const RunOptions& options) {
-  Scene scene = impulse2d::loadSceneFile(options.scenePath);
-  applyOverrides(options, scene);
-  if (options.framesDirectory) throw RunFailure("--frames is not built yet");
-  std::unique_ptr<Simulation> simulation = makeSimulation(scene);
-  std::unique_ptr<CsvWriter> csv;
-  if (options.csvPath) csv = std::make_unique<CsvWriter>(*options.csvPath);
+  const Scene scene = loadScene(options.scene);
+  std::unique_ptr<Simulation> simulation = impulse2d::makeSimulation(scene);
+  if (options.traceStep) return traceCommand(options, scene, *simulation);
+  Recorders recorders = openRecorders(options, scene);
 
   RunSummary summary;
   summary.scene = scene.name;
@@ -93,14 +118,14 @@ int runCommand(const RunOptions& options) {
   summary.steps = scene.steps;
   summary.dt = simulation->settings().dt;
   summary.start = measureEnergy(*simulation);
-  summary.wallSeconds = runSteps(*simulation, scene.steps, options.every, csv.get());
+  summary.wallSeconds = runSteps(*simulation, scene.steps, recorders);
   summary.end = measureEnergy(*simulation);
   summary.contactPoints = impulse2d::contactPointCount(*simulation);
   summary.largestPenetration = impulse2d::largestPenetration(*simulation);
-  if (csv) {
-    csv->commit();
-    summary.csvPath = csv->path();
-    summary.csvRows = csv->rowCount();
+  summary.outputs = recorders.finish(summary.dt);
+  if (recorders.csv) {
+    summary.csvPath = recorders.csv->path();
+    summary.csvRows = recorders.csv->rowCount();
   }
   printSummary(std::cout, summary);
   return kSuccess;

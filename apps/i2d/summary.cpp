@@ -25,6 +25,7 @@ void printSummary(std::ostream& out, const RunSummary& summary) {
   if (summary.csvPath) {
     out << "csv          " << *summary.csvPath << " (" << summary.csvRows << " rows)\n";
   }
+  for (const std::string& line : summary.outputs) out << line << "\n";
 }
 
 }  // namespace i2d

@@ -4,6 +4,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "impulse2d/simulation.h"
 
@@ -29,6 +30,7 @@ struct RunSummary {
   Energy end;
   std::optional<std::string> csvPath;
   long csvRows = 0;
+  std::vector<std::string> outputs;  ///< lines on the frames, sheet and video written
 };
 
 void printSummary(std::ostream& out, const RunSummary& summary);

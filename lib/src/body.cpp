@@ -12,7 +12,9 @@ double Body::kineticEnergy() const {
   return 0.5 * mass * velocity.squaredNorm() + 0.5 * inertia * angularVelocity * angularVelocity;
 }
 
-double Body::potentialEnergy(const Vec2& gravity) const { return -mass * gravity.dot(position); }
+double Body::potentialEnergy(const Vec2& gravity) const {
+  return -mass * gravity.dot(position);
+}
 
 Body makeBody(const std::string& name, BodyType type, Shape shape, double density,
               const Vec2& position, double angle) {

@@ -6,7 +6,9 @@
 
 namespace impulse2d {
 
-double mixFriction(double frictionA, double frictionB) { return std::sqrt(frictionA * frictionB); }
+double mixFriction(double frictionA, double frictionB) {
+  return std::sqrt(frictionA * frictionB);
+}
 
 double mixRestitution(double restitutionA, double restitutionB) {
   return std::max(restitutionA, restitutionB);

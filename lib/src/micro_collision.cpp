@@ -43,6 +43,9 @@ Vec2 contactVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2
 
 void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   prepare(context);
+  queueKeys_.clear();
+  for (const PointState& state : states_) queueKeys_.push_back(severity(state));
+  queue_.reset(queueKeys_);
   const int maxIterations = settings_.velocityIterationsPerContact * int(states_.size());
   report_ = SolveReport{};
   while (report_.iterations < maxIterations) {
@@ -156,16 +159,8 @@ double MicroCollisionSolver::severity(const PointState& state) const {
 }
 
 int MicroCollisionSolver::worstVelocityPoint() const {
-  int worst = -1;
-  double largest = settings_.velocityEpsilon;
-  for (int s = 0; s < int(states_.size()); ++s) {
-    const double need = severity(states_[s]);
-    if (need > largest) {
-      largest = need;
-      worst = s;
-    }
-  }
-  return worst;
+  if (queue_.empty() || queue_.worstKey() <= settings_.velocityEpsilon) return -1;
+  return queue_.worst();
 }
 
 // The total impulse (normal, tangent) at a point after this micro-collision: the inverse contact
@@ -218,8 +213,13 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   refreshContactVelocities(context, manifold.bodyA);
   refreshContactVelocities(context, manifold.bodyB);
   if (context.observer) {
-    const SolverEvent event{SolverEvent::Phase::Velocity, iteration, state.manifold, state.point,
-                            desired.x(), impulse.x(), impulse.y()};
+    const SolverEvent event{SolverEvent::Phase::Velocity,
+                            iteration,
+                            state.manifold,
+                            state.point,
+                            desired.x(),
+                            impulse.x(),
+                            impulse.y()};
     context.observer->onSolverEvent(event, context.bodies, context.manifolds);
   }
 }
@@ -232,13 +232,19 @@ void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, 
     state.contactVelocity =
         contactVelocity(context.bodies[manifold.bodyA], context.bodies[manifold.bodyB],
                         manifold.points[state.point].point, manifold.normal);
+    queue_.update(contactsOfBody_[i], severity(state));
   }
 }
 
 // ---- penetration resolution ----
 
 void MicroCollisionSolver::solvePositions(const StepContext& context) {
-  for (PointState& state : states_) state.penetration = currentPenetration(context, state);
+  queueKeys_.clear();
+  for (PointState& state : states_) {
+    state.penetration = currentPenetration(context, state);
+    queueKeys_.push_back(state.penetration);
+  }
+  queue_.reset(queueKeys_);
   const int maxIterations = settings_.positionIterationsPerContact * int(states_.size());
   for (int iteration = 0; iteration < maxIterations; ++iteration) {
     const int worst = worstPenetration();
@@ -258,15 +264,8 @@ double MicroCollisionSolver::currentPenetration(const StepContext& context,
 }
 
 int MicroCollisionSolver::worstPenetration() const {
-  int worst = -1;
-  double deepest = settings_.positionEpsilon;
-  for (int s = 0; s < int(states_.size()); ++s) {
-    if (states_[s].penetration > deepest) {
-      deepest = states_[s].penetration;
-      worst = s;
-    }
-  }
-  return worst;
+  if (queue_.empty() || queue_.worstKey() <= settings_.positionEpsilon) return -1;
+  return queue_.worst();
 }
 
 void MicroCollisionSolver::resolvePenetration(const StepContext& context, int index,
@@ -285,8 +284,13 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
   refreshPenetrations(context, manifold.bodyA);
   refreshPenetrations(context, manifold.bodyB);
   if (context.observer) {
-    const SolverEvent event{SolverEvent::Phase::Position, iteration, state.manifold, state.point,
-                            penetration, 0.0, 0.0};
+    const SolverEvent event{SolverEvent::Phase::Position,
+                            iteration,
+                            state.manifold,
+                            state.point,
+                            penetration,
+                            0.0,
+                            0.0};
     context.observer->onSolverEvent(event, context.bodies, context.manifolds);
   }
 }
@@ -320,6 +324,7 @@ void MicroCollisionSolver::refreshPenetrations(const StepContext& context, int b
   for (int i = contactsOfBodyStart_[bodyIndex]; i < contactsOfBodyStart_[bodyIndex + 1]; ++i) {
     PointState& state = states_[contactsOfBody_[i]];
     state.penetration = currentPenetration(context, state);
+    queue_.update(contactsOfBody_[i], state.penetration);
   }
 }
 

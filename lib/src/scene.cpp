@@ -20,8 +20,7 @@ std::vector<Body> buildBodies(const Scene& scene) {
 }
 
 std::unique_ptr<World> buildWorld(const Scene& scene) {
-  auto world =
-      std::make_unique<World>(scene.world, makeSolver(scene.solver, scene.solverSettings));
+  auto world = std::make_unique<World>(scene.world, makeSolver(scene.solver, scene.solverSettings));
   for (Body& body : buildBodies(scene)) world->addBody(std::move(body));
   return world;
 }

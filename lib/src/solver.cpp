@@ -9,7 +9,9 @@
 
 namespace impulse2d {
 
-std::vector<std::string> solverNames() { return {"micro", "sequential", "reference"}; }
+std::vector<std::string> solverNames() {
+  return {"micro", "sequential", "reference"};
+}
 
 std::unique_ptr<ContactSolver> makeSolver(const std::string& name, const SolverSettings& settings) {
   if (name == "micro") return std::make_unique<MicroCollisionSolver>(settings.micro);

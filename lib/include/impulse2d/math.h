@@ -13,13 +13,19 @@ using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 
 /// z component of the 3D cross product (a, 0) × (b, 0): the torque of force b at arm a.
-inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 /// (0, 0, w) × (r, 0): the velocity of a point at arm r on a body spinning at w.
-inline Vec2 cross(double w, const Vec2& r) { return Vec2(-w * r.y(), w * r.x()); }
+inline Vec2 cross(double w, const Vec2& r) {
+  return Vec2(-w * r.y(), w * r.x());
+}
 
 /// v turned +90° (counter-clockwise): the tangent of a contact whose normal is v.
-inline Vec2 leftPerpendicular(const Vec2& v) { return Vec2(-v.y(), v.x()); }
+inline Vec2 leftPerpendicular(const Vec2& v) {
+  return Vec2(-v.y(), v.x());
+}
 
 /// The rotation matrix of an angle in radians (counter-clockwise positive).
 inline Mat2 rotation(double angle) {

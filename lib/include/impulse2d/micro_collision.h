@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "impulse2d/solver.h"
+#include "impulse2d/worst_first_queue.h"
 
 namespace impulse2d {
 
@@ -35,12 +36,12 @@ class MicroCollisionSolver : public ContactSolver {
     int point = 0;
     Mat2 contactMatrix = Mat2::Zero();         ///< unit impulse -> velocity change
     Mat2 inverseContactMatrix = Mat2::Zero();  ///< velocity change -> impulse
-    Vec2 contactVelocity = Vec2::Zero();  ///< (normal, tangent) relative velocity now
+    Vec2 contactVelocity = Vec2::Zero();       ///< (normal, tangent) relative velocity now
     /// The separating velocity wanted: the bounce −c·(vs − vacc), fixed before the solve, or
     /// without a bounce −gap/dt for a contact with a gap (it may close it, no more).
     double targetNormalVelocity = 0.0;
-    double penetration = 0.0;             ///< m, kept current while bodies move
-    Vec2 totalImpulse = Vec2::Zero();     ///< (normal, tangent) applied here in this update
+    double penetration = 0.0;          ///< m, kept current while bodies move
+    Vec2 totalImpulse = Vec2::Zero();  ///< (normal, tangent) applied here in this update
     FrictionState friction = FrictionState::None;
   };
 
@@ -65,9 +66,12 @@ class MicroCollisionSolver : public ContactSolver {
 
   MicroCollisionSettings settings_;
   std::vector<PointState> states_;
-  std::vector<int> contactsOfBodyStart_;  ///< states_ of body i: contactsOfBody_[start[i], start[i+1])
+  std::vector<int>
+      contactsOfBodyStart_;  ///< states_ of body i: contactsOfBody_[start[i], start[i+1])
   std::vector<int> contactsOfBody_;
-  double dt_ = 0.0;  ///< the step being resolved
+  std::vector<double> queueKeys_;
+  WorstFirstQueue queue_;  ///< contact points by how badly they need resolving
+  double dt_ = 0.0;        ///< the step being resolved
   SolveReport report_;
 };
 

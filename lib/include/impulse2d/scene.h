@@ -14,24 +14,24 @@ namespace impulse2d {
 
 /// One body as a scene states it. Defaults are those a scene file gets when it omits a key.
 struct BodyDef {
-  std::string name;                        ///< default "body<index>"
+  std::string name;  ///< default "body<index>"
   BodyType type = BodyType::Dynamic;
-  Shape shape = makeCircle(0.5);           ///< centred on the centre of mass
-  Vec2 position = Vec2::Zero();            ///< m, centre of mass
-  double angle = 0.0;                      ///< rad
-  Vec2 velocity = Vec2::Zero();            ///< m/s
-  double angularVelocity = 0.0;            ///< rad/s
-  double density = 1.0;                    ///< kg/m^2
+  Shape shape = makeCircle(0.5);  ///< centred on the centre of mass
+  Vec2 position = Vec2::Zero();   ///< m, centre of mass
+  double angle = 0.0;             ///< rad
+  Vec2 velocity = Vec2::Zero();   ///< m/s
+  double angularVelocity = 0.0;   ///< rad/s
+  double density = 1.0;           ///< kg/m^2
   double friction = 0.5;
   double restitution = 0.0;
 };
 
 /// How frames look at a scene, when the scene says ([render] table); unset fields are fitted.
 struct ViewDef {
-  int width = 800;   ///< pixels
-  int height = 600;  ///< pixels
-  std::optional<Vec2> centre;    ///< m, world point at the image centre
-  std::optional<double> scale;   ///< pixels per metre
+  int width = 800;              ///< pixels
+  int height = 600;             ///< pixels
+  std::optional<Vec2> centre;   ///< m, world point at the image centre
+  std::optional<double> scale;  ///< pixels per metre
 };
 
 struct Scene {

@@ -20,9 +20,9 @@ class ShapeError : public std::invalid_argument {
 
 struct Shape {
   ShapeType type = ShapeType::Circle;
-  double radius = 0.0;           ///< circle radius (m); 0 for polygons
-  std::vector<Vec2> vertices;    ///< polygon vertices, counter-clockwise, centroid at the origin
-  std::vector<Vec2> normals;     ///< outward unit normal of edge i (vertices[i] -> vertices[i+1])
+  double radius = 0.0;         ///< circle radius (m); 0 for polygons
+  std::vector<Vec2> vertices;  ///< polygon vertices, counter-clockwise, centroid at the origin
+  std::vector<Vec2> normals;   ///< outward unit normal of edge i (vertices[i] -> vertices[i+1])
 };
 
 /// Mass properties of a shape of uniform density.

@@ -1,0 +1,117 @@
+// `i2d compare`: the same scene run side by side, once per solver or once per set of --set
+// changes, drawn as labelled panels with one camera, every K-th step, and a contact sheet.
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "failures.h"
+#include "frame_output.h"
+#include "impulse2d/box2d/box2d_simulation.h"
+#include "impulse2d/render/panels.h"
+#include "impulse2d/render/video.h"
+#include "impulse2d/scene_file.h"
+#include "scene_setup.h"
+
+namespace i2d {
+namespace {
+
+using impulse2d::Scene;
+using impulse2d::Simulation;
+using namespace impulse2d::render;
+
+/// One panel's run: its scene, its simulation and the renderer that draws it.
+struct PanelRun {
+  std::string label;
+  Scene scene;
+  std::unique_ptr<Simulation> simulation;
+  std::unique_ptr<FrameRenderer> renderer;
+};
+
+/// The panel's scene: the file, then --solver or the panel's solver, the common --sets, the
+/// panel's own --sets, then --steps and --dt.
+Scene panelScene(const Scene& file, const SceneOptions& common, const PanelOption& panel) {
+  SceneOptions options = common;
+  if (panel.solver) options.solver = panel.solver;
+  options.settings.insert(options.settings.end(), panel.settings.begin(), panel.settings.end());
+  Scene scene = file;
+  applyOverrides(options, scene);
+  return scene;
+}
+
+std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
+  const Scene file = impulse2d::loadSceneFile(options.scene.scenePath);
+  const Camera camera = sceneCamera(file, settings);  // --set changes no body: one view for all
+  std::vector<PanelRun> runs;
+  for (const PanelOption& panel : options.panels) {
+    PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, nullptr};
+    run.simulation = impulse2d::makeSimulation(run.scene);
+    run.renderer = std::make_unique<FrameRenderer>(camera, run.scene.name, settings);
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
+bool isFinite(const Simulation& simulation) {
+  for (const impulse2d::Body& body : simulation.bodies()) {
+    if (!body.position.allFinite() || !std::isfinite(body.angle)) return false;
+  }
+  return true;
+}
+
+void stepPanels(std::vector<PanelRun>& runs) {
+  for (PanelRun& run : runs) {
+    run.simulation->step();
+    if (!isFinite(*run.simulation)) {
+      throw RunFailure("panel '" + run.label + "' became non-finite at step " +
+                       std::to_string(run.simulation->stepCount()));
+    }
+  }
+}
+
+void writePanels(std::vector<PanelRun>& runs, FrameWriter& writer,
+                 const RenderSettings& settings) {
+  std::vector<Panel> panels;
+  for (PanelRun& run : runs) {
+    panels.push_back({&run.renderer->draw(*run.simulation), run.label});
+  }
+  writer.write(runs.front().simulation->stepCount(), composePanels(panels, settings));
+}
+
+void printPanelSummary(const std::vector<PanelRun>& runs) {
+  for (const PanelRun& run : runs) {
+    const Simulation& simulation = *run.simulation;
+    std::cout << "panel        " << run.label << ": solver " << simulation.solverName() << ", "
+              << simulation.stepCount() << " steps, kinetic " << impulse2d::kineticEnergy(simulation)
+              << " J and potential " << impulse2d::potentialEnergy(simulation)
+              << " J at end, largest penetration " << impulse2d::largestPenetration(simulation)
+              << " m\n";
+  }
+}
+
+}  // namespace
+
+int compareCommand(const CompareOptions& options) {
+  checkVideoPossible(options.frames);
+  const RenderSettings settings = renderSettings(options.frames);
+  std::vector<PanelRun> runs = startPanels(options, settings);
+  const Scene& first = runs.front().scene;
+  FrameWriter writer(*options.frames.directory, first.name, options.every,
+                     comparePrefix(first.name), settings);
+  std::cout << "scene        " << first.name << " (" << runs.size() << " panels, " << first.steps
+            << " steps)\n";
+  for (long step = 0; step <= first.steps; ++step) {
+    if (step > 0) stepPanels(runs);
+    if (isRecorded(step, first.steps, options.every)) writePanels(runs, writer, settings);
+  }
+  writer.writeContactSheet();
+  printPanelSummary(runs);
+  for (const std::string& line : describeFrames(writer)) std::cout << line << "\n";
+  if (options.frames.video) {
+    std::cout << "video        "
+              << writeVideo(writer, 1.0 / (first.world.dt * options.every)).string() << "\n";
+  }
+  return kSuccess;
+}
+
+}  // namespace i2d

@@ -1,0 +1,49 @@
+// PNG output of the commands: a run's numbered frames, its contact sheet and optional video, as
+// docs/rendering.md lays them out under --frames DIR.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "impulse2d/render/frame.h"
+#include "impulse2d/render/frame_writer.h"
+#include "impulse2d/scene.h"
+#include "impulse2d/simulation.h"
+#include "options.h"
+
+namespace i2d {
+
+/// The default render settings with the command line's overlay switches.
+impulse2d::render::RenderSettings renderSettings(const FrameOptions& options);
+
+/// The camera every frame of the scene shares: fitted to its starting bodies or its [render].
+impulse2d::render::Camera sceneCamera(const impulse2d::Scene& scene,
+                                      const impulse2d::render::RenderSettings& settings);
+
+/// Throws RunFailure before a run when --video was asked for and ffmpeg is not on PATH.
+void checkVideoPossible(const FrameOptions& options);
+
+/// True for the steps a run records: every K-th, and the last.
+bool isRecorded(long step, long lastStep, int every);
+
+/// The summary lines of written frames: where they are, the sheet, the video.
+std::vector<std::string> describeFrames(const impulse2d::render::FrameWriter& writer);
+
+/// The frames of one run: every K-th step and the last, then the sheet and the video.
+class FrameRecorder {
+ public:
+  /// Creates DIR/<scene>/ and checks it is writable (RenderError naming the path).
+  FrameRecorder(const FrameOptions& options, const impulse2d::Scene& scene, int every);
+
+  /// Draws and writes the frame of the simulation's current step if the run records it.
+  void record(const impulse2d::Simulation& simulation, long lastStep);
+  /// Writes the contact sheet, and the video when asked; returns the summary lines.
+  std::vector<std::string> finish(double dt);
+
+ private:
+  impulse2d::render::FrameRenderer renderer_;
+  impulse2d::render::FrameWriter writer_;
+  bool video_ = false;
+};
+
+}  // namespace i2d
