@@ -1,15 +1,22 @@
 // The i2d program as a user meets it: exit codes, the summary, the exact CSV, one-line errors,
-// and no half-written output file after any failure (docs/i2d.md).
+// no half-written output file after any failure, and the frames, sheets, traces, comparison
+// panels and Box2D agreement tables it writes (docs/i2d.md).
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "impulse2d/render/contact_sheet.h"
+#include "impulse2d/render/panels.h"
+#include "impulse2d/render/png.h"
+#include "impulse2d/render/video.h"
 
 namespace fs = std::filesystem;
 
@@ -80,16 +87,23 @@ void writeFile(const std::string& path, const std::string& text) {
 TEST_CASE("i2d --help and each command's --help say what it does", "[i2d][help]") {
   const Outcome general = i2d("--help");
   CHECK(general.exitCode == 0);
-  for (const char* topic : {"i2d run SCENE", "i2d check SCENE", "0  success", "1  failure",
-                            "2  bad command line", "3  invalid scene"}) {
+  for (const char* topic :
+       {"i2d run SCENE", "i2d compare SCENE", "i2d agree SCENE", "i2d check SCENE", "0  success",
+        "1  failure", "2  bad command line", "3  invalid scene"}) {
     CHECK(general.out.find(topic) != std::string::npos);
   }
   const Outcome run = i2d("run --help");
   CHECK(run.exitCode == 0);
   for (const char* option : {"--solver", "--steps", "--dt", "--set", "--csv", "--every", "--frames",
-                             "step,t,body,x,y,angle_rad,vx,vy,omega_rad_s"}) {
+                             "--video", "--trace-step", "--no-overlays", "--hide", "--show",
+                             "_sheet.png", "step,t,body,x,y,angle_rad,vx,vy,omega_rad_s"}) {
     CHECK(run.out.find(option) != std::string::npos);
   }
+  const Outcome compare = i2d("compare --help");
+  for (const char* option : {"--solvers", "--panel", "--frames", "_compare_00000.png"}) {
+    CHECK(compare.out.find(option) != std::string::npos);
+  }
+  CHECK(i2d("agree --help").out.find("usage: i2d agree SCENE") == 0);
   CHECK(i2d("check --help").out.find("usage: i2d check SCENE") == 0);
 }
 
@@ -220,5 +234,192 @@ TEST_CASE("i2d check prints the solver, settings and bodies", "[i2d][check]") {
                            "  ball: dynamic circle radius 0.5 m"}) {
     INFO(text);
     CHECK(outcome.out.find(text) != std::string::npos);
+  }
+}
+
+namespace {
+
+/// The size of the PNG image at `path`, decoded in full (so a corrupt file fails here).
+std::pair<int, int> pngSize(const std::string& path) {
+  const impulse2d::render::Canvas image = impulse2d::render::readPng(path);
+  return {image.width(), image.height()};
+}
+
+/// The names of the files in `directory` that start with `prefix`, sorted.
+std::vector<std::string> filesStartingWith(const std::string& directory,
+                                           const std::string& prefix) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(directory)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) == 0) names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// "step,t,body" of a CSV row.
+std::string stepTimeAndBody(const std::string& row) {
+  size_t end = 0;
+  for (int field = 0; field < 3; ++field) end = row.find(',', end) + 1;
+  return row.substr(0, end - 1);
+}
+
+}  // namespace
+
+TEST_CASE("run --frames writes a frame every K-th step, the last, and a sheet", "[i2d][frames]") {
+  const TemporaryDirectory directory;
+  const Outcome outcome = i2d(
+      "run " + kScenes + "bouncing_ball.toml --steps 11 --every 5 --frames " + (directory / ""));
+  CHECK(outcome.exitCode == 0);
+  CHECK(outcome.err.empty());
+  const std::string frames = directory / "bouncing_ball";
+  // Steps 0, 5, 10 and the last, 11: numbered without gaps.
+  CHECK(filesStartingWith(frames, "bouncing_ball") ==
+        std::vector<std::string>{"bouncing_ball_00000.png", "bouncing_ball_00001.png",
+                                 "bouncing_ball_00002.png", "bouncing_ball_00003.png",
+                                 "bouncing_ball_sheet.png"});
+  // The scene's [render] table asks for 800 x 600.
+  CHECK(pngSize(frames + "/bouncing_ball_00003.png") == std::pair<int, int>(800, 600));
+  const impulse2d::render::SheetLayout sheet =
+      impulse2d::render::contactSheetLayout(4, 800, 600, impulse2d::render::RenderSettings{});
+  CHECK(pngSize(frames + "/bouncing_ball_sheet.png") ==
+        std::pair<int, int>(sheet.width, sheet.height));
+  CHECK(outcome.out.find("sheet        " + frames + "/bouncing_ball_sheet.png") !=
+        std::string::npos);
+}
+
+TEST_CASE("a frame directory that cannot be made is one error line and exit code 1",
+          "[i2d][frames][errors]") {
+  const TemporaryDirectory directory;
+  const std::string missing = directory / "missing/frames";
+  const Outcome outcome =
+      i2d("run " + kScenes + "bouncing_ball.toml --steps 2 --frames " + missing);
+  CHECK(outcome.exitCode == 1);
+  CHECK(outcome.out.empty());
+  CHECK(outcome.err.rfind("error: ", 0) == 0);
+  CHECK(outcome.err.find(missing) != std::string::npos);
+  CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+  CHECK(directory.files().empty());
+}
+
+TEST_CASE("run --video without ffmpeg on PATH is one error line and exit code 1", "[i2d][frames]") {
+  if (impulse2d::render::findFfmpeg()) return;  // with ffmpeg, --video succeeds instead
+  const TemporaryDirectory directory;
+  const Outcome outcome = i2d("run " + kScenes + "bouncing_ball.toml --steps 2 --video --frames " +
+                              (directory / "frames"));
+  CHECK(outcome.exitCode == 1);
+  CHECK(outcome.err.rfind("error: --video needs ffmpeg on PATH", 0) == 0);
+  CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+}
+
+TEST_CASE("run --solver box2d writes the same CSV header and rows as micro", "[i2d][box2d][csv]") {
+  const TemporaryDirectory directory;
+  const std::string scene = "run " + kScenes + "incline_friction.toml --steps 12 --every 5 ";
+  REQUIRE(i2d(scene + "--csv " + (directory / "micro.csv")).exitCode == 0);
+  const Outcome box2d = i2d(scene + "--solver box2d --csv " + (directory / "box2d.csv"));
+  CHECK(box2d.exitCode == 0);
+  CHECK(box2d.out.find("solver box2d") != std::string::npos);
+  const std::vector<std::string> micro = readLines(directory / "micro.csv");
+  const std::vector<std::string> reference = readLines(directory / "box2d.csv");
+  REQUIRE(reference.size() == micro.size());
+  CHECK(micro.size() == 1 + 2 * 4);  // steps 0, 5, 10, 12 of the two boxes
+  CHECK(reference[0] == kHeader);
+  // The same step, time and body on every row; only the states differ.
+  for (size_t row = 1; row < micro.size(); ++row) {
+    INFO("row " << row);
+    CHECK(stepTimeAndBody(reference[row]) == stepTimeAndBody(micro[row]));
+  }
+}
+
+TEST_CASE("run --trace-step writes one frame per solver event of that step", "[i2d][trace]") {
+  const TemporaryDirectory directory;
+  const std::string run = "run " + kScenes + "resting_box.toml --frames " + (directory / "");
+  // The box lands in step 13: two corners, resolved one impulse at a time.
+  const Outcome outcome = i2d(run + " --trace-step 13");
+  CHECK(outcome.exitCode == 0);
+  const std::vector<std::string> frames =
+      filesStartingWith(directory / "resting_box", "resting_box_step00013_");
+  REQUIRE(frames.size() >= 3);  // at least two events and the sheet
+  CHECK(frames.back() == "resting_box_step00013_sheet.png");
+  CHECK(outcome.out.find("step 13: " + std::to_string(frames.size() - 1) + " solver events") !=
+        std::string::npos);
+
+  const Outcome box2d = i2d(run + " --trace-step 13 --solver box2d");
+  CHECK(box2d.exitCode == 1);
+  CHECK(box2d.err.rfind("error: solver box2d reports no solver events", 0) == 0);
+}
+
+TEST_CASE("compare writes the solvers' frames side by side, labelled, and a sheet",
+          "[i2d][compare]") {
+  const TemporaryDirectory directory;
+  const Outcome outcome = i2d("compare " + kScenes +
+                              "bouncing_ball.toml --solvers micro,box2d --steps 4 --every 2 "
+                              "--frames " +
+                              (directory / ""));
+  CHECK(outcome.exitCode == 0);
+  CHECK(outcome.out.find("panel        micro: solver micro") != std::string::npos);
+  CHECK(outcome.out.find("panel        box2d: solver box2d") != std::string::npos);
+  const std::string frames = directory / "bouncing_ball";
+  CHECK(filesStartingWith(frames, "bouncing_ball_compare") ==
+        std::vector<std::string>{
+            "bouncing_ball_compare_00000.png", "bouncing_ball_compare_00001.png",
+            "bouncing_ball_compare_00002.png", "bouncing_ball_compare_sheet.png"});
+  // Two 800 x 600 panels, spacing around each, a label bar above.
+  const impulse2d::render::RenderSettings settings;
+  CHECK(pngSize(frames + "/bouncing_ball_compare_00002.png") ==
+        std::pair<int, int>(
+            2 * 800 + 3 * settings.spacing,
+            600 + impulse2d::render::panelLabelHeight(settings) + 2 * settings.spacing));
+}
+
+TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compare]") {
+  const TemporaryDirectory directory;
+  const Outcome outcome =
+      i2d("compare " + kScenes + "jitter.toml --steps 30 --every 30 --frames " + (directory / "") +
+          " --panel 'removal on: solver.remove_acceleration_velocity=true'"
+          " --panel 'removal off: solver.remove_acceleration_velocity=false;"
+          " solver.lower_restitution_at_low_speed=false'");
+  CHECK(outcome.exitCode == 0);
+  CHECK(outcome.out.find("panel        removal on: solver micro") != std::string::npos);
+  CHECK(outcome.out.find("panel        removal off: solver micro") != std::string::npos);
+  CHECK(filesStartingWith(directory / "jitter", "jitter_compare").size() == 2 + 1);
+
+  const Outcome badPanel = i2d("compare " + kScenes + "jitter.toml --frames " + (directory / "") +
+                               " --panel 'off: solver.no_such_key=1'");
+  CHECK(badPanel.exitCode == 2);
+  CHECK(badPanel.err.find("no_such_key") != std::string::npos);
+}
+
+TEST_CASE("agree prints a table per dynamic body, a row per method", "[i2d][agree][box2d]") {
+  const Outcome outcome = i2d("agree " + kScenes + "incline_friction.toml --steps 30");
+  CHECK(outcome.exitCode == 0);
+  for (const char* text : {"# Agreement with Box2D: incline_friction", "## holds", "## slides",
+                           "| box2d |", "| micro |", "| sequential |", "| reference |"}) {
+    INFO(text);
+    CHECK(outcome.out.find(text) != std::string::npos);
+  }
+  const Outcome one = i2d("agree " + kScenes + "incline_friction.toml --steps 30 --solvers micro");
+  CHECK(one.out.find("| sequential |") == std::string::npos);
+  CHECK(i2d("agree " + kScenes + "stack.toml --solvers box2d").exitCode == 2);
+}
+
+TEST_CASE("frame options without --frames, and bad overlays, are usage errors",
+          "[i2d][frames][errors]") {
+  const std::string scene = kScenes + "bouncing_ball.toml";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"run " + scene + " --video", "error: --video needs --frames DIR\n"},
+      {"run " + scene + " --trace-step 3", "error: --trace-step needs --frames DIR\n"},
+      {"run " + scene + " --video=yes", "error: option --video takes no value\n"},
+      {"compare " + scene + " --frames f", "error: i2d compare needs --solvers or --panel\n"},
+      {"compare " + scene + " --solvers micro", "error: i2d compare needs --frames DIR\n"},
+      {"run " + scene + " --hide arrows",
+       "error: unknown overlay 'arrows' for --hide (known: all, contact_normals, contact_points, "
+       "friction_impulses, heads_up, normal_impulses, rotation_marks, velocities)\n"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    INFO("i2d " << arguments);
+    const Outcome outcome = i2d(arguments);
+    CHECK(outcome.exitCode == 2);
+    CHECK(outcome.err == message);
   }
 }

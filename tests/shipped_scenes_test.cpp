@@ -57,9 +57,9 @@ double slopeAcceleration(const std::string& sceneName, const std::string& bodyNa
 
 TEST_CASE("demos/scenes holds one valid scene per concept, each saying what it shows",
           "[scenes][shipped]") {
-  const std::set<std::string> concepts = {"resting_box",    "bouncing_ball", "incline_holds",
-                                          "incline_slides", "rolling_disk",  "stack",
-                                          "pyramid"};
+  const std::set<std::string> concepts = {
+      "resting_box",      "jitter",       "bouncing_ball", "incline_holds", "incline_slides",
+      "incline_friction", "rolling_disk", "spinning_disk", "stack",         "pyramid"};
   std::set<std::string> found;
   for (const auto& entry :
        std::filesystem::directory_iterator(IMPULSE2D_SOURCE_DIR "/demos/scenes")) {

@@ -69,8 +69,7 @@ void stepPanels(std::vector<PanelRun>& runs) {
   }
 }
 
-void writePanels(std::vector<PanelRun>& runs, FrameWriter& writer,
-                 const RenderSettings& settings) {
+void writePanels(std::vector<PanelRun>& runs, FrameWriter& writer, const RenderSettings& settings) {
   std::vector<Panel> panels;
   for (PanelRun& run : runs) {
     panels.push_back({&run.renderer->draw(*run.simulation), run.label});
@@ -82,10 +81,10 @@ void printPanelSummary(const std::vector<PanelRun>& runs) {
   for (const PanelRun& run : runs) {
     const Simulation& simulation = *run.simulation;
     std::cout << "panel        " << run.label << ": solver " << simulation.solverName() << ", "
-              << simulation.stepCount() << " steps, kinetic " << impulse2d::kineticEnergy(simulation)
-              << " J and potential " << impulse2d::potentialEnergy(simulation)
-              << " J at end, largest penetration " << impulse2d::largestPenetration(simulation)
-              << " m\n";
+              << simulation.stepCount() << " steps, kinetic "
+              << impulse2d::kineticEnergy(simulation) << " J and potential "
+              << impulse2d::potentialEnergy(simulation) << " J at end, largest penetration "
+              << impulse2d::largestPenetration(simulation) << " m\n";
   }
 }
 

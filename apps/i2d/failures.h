@@ -8,7 +8,7 @@ namespace i2d {
 
 enum ExitCode : int {
   kSuccess = 0,
-  kRunFailed = 1,       ///< the run could not finish: non-finite state, write error, not built
+  kRunFailed = 1,       ///< the run could not finish: non-finite state, write error, no ffmpeg
   kBadCommandLine = 2,  ///< unknown command or option, missing or malformed value
   kInvalidScene = 3,    ///< the scene file cannot be read or is not a valid scene
 };

@@ -20,8 +20,9 @@ Camera sceneCamera(const impulse2d::Scene& scene, const RenderSettings& settings
 
 void checkVideoPossible(const FrameOptions& options) {
   if (options.video && !findFfmpeg()) {
-    throw RunFailure("--video needs ffmpeg on PATH; install it, or leave out --video and make "
-                     "the video by hand (docs/rendering.md)");
+    throw RunFailure(
+        "--video needs ffmpeg on PATH; install it, or leave out --video and make "
+        "the video by hand (docs/rendering.md)");
   }
 }
 
@@ -37,8 +38,7 @@ std::vector<std::string> describeFrames(const FrameWriter& writer) {
           "sheet        " + writer.sheetPath().string()};
 }
 
-FrameRecorder::FrameRecorder(const FrameOptions& options, const impulse2d::Scene& scene,
-                             int every)
+FrameRecorder::FrameRecorder(const FrameOptions& options, const impulse2d::Scene& scene, int every)
     : renderer_(sceneCamera(scene, renderSettings(options)), scene.name, renderSettings(options)),
       writer_(*options.directory, scene.name, every, "", renderSettings(options)),
       video_(options.video) {}

@@ -90,7 +90,8 @@ exit codes: 0 success, 1 failure while running (non-finite state, unwritable fil
 directory, --video without ffmpeg), 2 bad command line, 3 invalid scene.
 )";
 
-const char* const kCompareHelp = R"(usage: i2d compare SCENE (--solvers LIST | --panel SPEC...) --frames DIR [options]
+const char* const kCompareHelp =
+    R"(usage: i2d compare SCENE (--solvers LIST | --panel SPEC...) --frames DIR [options]
 
 Runs the scene once per panel, all panels in lockstep, and writes their frames side by side,
 each under a bar with its label, all drawn with one camera:

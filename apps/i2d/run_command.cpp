@@ -84,8 +84,9 @@ Recorders openRecorders(const RunOptions& options, const Scene& scene) {
 /// --trace-step N: runs to step N and draws each solver event of it, then its sheet.
 int traceCommand(const RunOptions& options, const Scene& scene, Simulation& simulation) {
   if (simulation.solverName() == impulse2d::kBox2dName) {
-    throw RunFailure("solver box2d reports no solver events, so it cannot be traced; trace "
-                     "micro, sequential or reference");
+    throw RunFailure(
+        "solver box2d reports no solver events, so it cannot be traced; trace "
+        "micro, sequential or reference");
   }
   const long step = *options.traceStep;
   const impulse2d::render::RenderSettings settings = renderSettings(options.frames);

@@ -75,6 +75,7 @@ double pointViolation(double normalImpulse, double tangentImpulse, double normal
 void ReferenceSolver::solveVelocities(const StepContext& context) {
   report_ = SolveReport{};
   collectPoints(context);
+  if (rows_.empty()) return;  // nothing touches: no system to solve
   buildDelassus(context);
   buildFreeVelocity(context);
   formulateLcp();
