@@ -18,7 +18,9 @@ namespace impulse2d {
 struct SolverEvent {
   enum class Phase { Velocity, Position };
   Phase phase = Phase::Velocity;
-  int iteration = 0;  ///< 0-based count of events of this phase in this step
+  /// 0-based: the micro-collision resolver counts its impulses (or moves) in this step,
+  /// sequential impulses count their sweeps.
+  int iteration = 0;
   int manifold = -1;  ///< index into the step's manifolds
   int point = -1;     ///< 0 or 1
   /// Velocity phase: the velocity change the solver wanted at the point along the normal (m/s).
