@@ -55,24 +55,62 @@ double slopeAcceleration(const std::string& sceneName, const std::string& bodyNa
 
 }  // namespace
 
-TEST_CASE("demos/scenes holds one valid scene per concept, each saying what it shows",
-          "[scenes][shipped]") {
-  const std::set<std::string> concepts = {
+/// The benchmark scenes of docs/performance.md. They run sequential impulses: the lecture's
+/// resolver takes about 0.2 s per step on a 210-box pyramid.
+const std::set<std::string> kBenchmarkScenes = {"pyramid20", "pyramid40", "stack10", "stack20",
+                                                "rain"};
+
+TEST_CASE(
+    "demos/scenes holds one valid scene per concept and the benchmark scenes, each saying "
+    "what it shows",
+    "[scenes][shipped]") {
+  std::set<std::string> expected = {
       "resting_box",      "jitter",       "bouncing_ball", "incline_holds", "incline_slides",
       "incline_friction", "rolling_disk", "spinning_disk", "stack",         "pyramid"};
+  expected.insert(kBenchmarkScenes.begin(), kBenchmarkScenes.end());
   std::set<std::string> found;
   for (const auto& entry :
        std::filesystem::directory_iterator(IMPULSE2D_SOURCE_DIR "/demos/scenes")) {
     if (entry.path().extension() != ".toml") continue;
-    found.insert(entry.path().stem().string());
+    const std::string name = entry.path().stem().string();
+    found.insert(name);
     const Scene scene = loadSceneFile(entry.path().string());
-    CHECK(scene.solver == "micro");
+    CHECK(scene.solver == (kBenchmarkScenes.count(name) ? "sequential" : "micro"));
     std::ifstream file(entry.path());
     std::string firstLine;
     std::getline(file, firstLine);
     CHECK(firstLine.rfind("# ", 0) == 0);
   }
-  CHECK(found == concepts);
+  CHECK(found == expected);
+}
+
+/// The dynamic bodies of a scene: how many, and whether all have this shape, density and
+/// friction.
+int dynamicBodiesLike(const Scene& scene, ShapeType shape, double friction) {
+  int count = 0;
+  for (const BodyDef& body : scene.bodies) {
+    if (body.type == BodyType::Static) continue;
+    CHECK(body.shape.type == shape);
+    CHECK(body.density == 1.0);
+    CHECK(body.friction == friction);
+    ++count;
+  }
+  return count;
+}
+
+TEST_CASE("the benchmark scenes are set up as the field's: gravity -10, 60 Hz, friction 0.6",
+          "[scenes][benchmark]") {
+  for (const std::string& name : kBenchmarkScenes) {
+    INFO(name);
+    const Scene scene = shippedScene(name);
+    CHECK(scene.world.gravity == Vec2(0.0, -10.0));
+    CHECK(scene.world.dt == Approx(1.0 / 60.0));
+  }
+  CHECK(dynamicBodiesLike(shippedScene("pyramid20"), ShapeType::Polygon, 0.6) == 210);
+  CHECK(dynamicBodiesLike(shippedScene("pyramid40"), ShapeType::Polygon, 0.6) == 820);
+  CHECK(dynamicBodiesLike(shippedScene("stack10"), ShapeType::Polygon, 0.6) == 10);
+  CHECK(dynamicBodiesLike(shippedScene("stack20"), ShapeType::Polygon, 0.6) == 20);
+  CHECK(dynamicBodiesLike(shippedScene("rain"), ShapeType::Circle, 0.6) == 1000);
 }
 
 TEST_CASE("resting_box: the dropped box ends at rest on the ground", "[scenes][resting]") {

@@ -71,7 +71,7 @@ void CsvWriter::commit() {
 }
 
 void CsvWriter::throwIfWriteFailed() {
-  if (out_.fail()) throw RunFailure("cannot write " + temporaryPath_);
+  if (out_.fail()) throw RunFailure("cannot write " + temporaryPath_ + ": " + std::strerror(errno));
 }
 
 }  // namespace i2d

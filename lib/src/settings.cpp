@@ -4,7 +4,15 @@
 namespace impulse2d {
 
 std::vector<SettingField> describe(WorldSettings& s) {
-  return {{"gravity", &s.gravity}, {"dt", &s.dt}, {"contact_margin", &s.contactMargin}};
+  return {{"gravity", &s.gravity},
+          {"dt", &s.dt},
+          {"contact_margin", &s.contactMargin},
+          {"substeps", &s.substeps},
+          {"speculative_contacts", &s.speculativeContacts},
+          {"sleeping", &s.sleeping},
+          {"sleep_linear_speed", &s.sleepLinearSpeed},
+          {"sleep_angular_speed", &s.sleepAngularSpeed},
+          {"time_to_sleep", &s.timeToSleep}};
 }
 
 std::vector<SettingField> describe(MicroCollisionSettings& s) {

@@ -1,14 +1,55 @@
-// The world's step: contacts, velocities, the solver, positions (order in world.h).
+// The world's step: contacts, islands, velocities, the solver, positions, sleep (order in
+// world.h).
 #include "impulse2d/world.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
 
 #include "impulse2d/collide.h"
 
 namespace impulse2d {
+namespace {
+
+std::pair<int, int> keyOf(const Manifold& manifold) {
+  return {manifold.bodyA, manifold.bodyB};
+}
+
+/// Impulses of the last step at points with the same feature id (warm starting).
+void carryOverImpulses(const Manifold& previous, Manifold& manifold) {
+  for (int i = 0; i < manifold.pointCount; ++i) {
+    ContactPoint& point = manifold.points[i];
+    for (int j = 0; j < previous.pointCount; ++j) {
+      if (previous.points[j].id != point.id) continue;
+      point.normalImpulse = previous.points[j].normalImpulse;
+      point.tangentImpulse = previous.points[j].tangentImpulse;
+    }
+  }
+}
+
+/// A sleeping body has zero velocity and no force: any it has now, the user gave it.
+bool disturbed(const Body& body) {
+  return body.velocity != Vec2::Zero() || body.angularVelocity != 0.0 ||
+         body.force != Vec2::Zero() || body.torque != 0.0;
+}
+
+/// Freezes a body of a resting island: zero velocity, so its contacts stay as they are.
+void fallAsleep(Body& body) {
+  body.asleep = true;
+  body.velocity.setZero();
+  body.angularVelocity = 0.0;
+  body.force.setZero();
+  body.torque = 0.0;
+}
+
+}  // namespace
 
 World::World(const WorldSettings& settings, std::unique_ptr<ContactSolver> solver)
-    : settings_(settings), solver_(std::move(solver)) {}
+    : settings_(settings), solver_(std::move(solver)) {
+  if (settings_.substeps < 1) throw std::invalid_argument("substeps must be at least 1");
+}
 
 int World::addBody(Body body) {
   body.updateCache();
@@ -18,97 +59,235 @@ int World::addBody(Body body) {
 }
 
 void World::step() {
-  findContacts();
-  integrateVelocities();
-  const StepContext context{bodies_, manifolds_, settings_.dt, observer_};
-  solver_->solveVelocities(context);
-  integratePositions();
-  solver_->solvePositions(context);
+  const double h = settings_.dt / settings_.substeps;
+  for (int i = 0; i < settings_.substeps; ++i) substep(h);
   ++stepCount_;
 }
 
-void World::findContacts() {
-  previousManifolds_.swap(manifolds_);
-  manifolds_.clear();
-  findCandidatePairs();
-  for (const auto& [a, b] : candidatePairs_) {
-    Manifold manifold;
-    manifold.bodyA = a;
-    manifold.bodyB = b;
-    if (collide(bodies_[a], bodies_[b], settings_.contactMargin, manifold) == 0) continue;
-    manifold.friction = mixFriction(bodies_[a].friction, bodies_[b].friction);
-    manifold.restitution = mixRestitution(bodies_[a].restitution, bodies_[b].restitution);
-    manifolds_.push_back(manifold);
-  }
-  carryOverImpulses(previousManifolds_);
+void World::substep(double h) {
+  statistics_ = StepStatistics{};
+  wakeDisturbedBodies();
+  findContacts(h);
+  wakeTouchedIslands();
+  integrateVelocities(h);
+  const StepContext context{bodies_, manifoldsToSolve(), h, observer_};
+  solver_->solveVelocities(context);
+  integratePositions(h);
+  solver_->solvePositions(context);
+  storeSolvedManifolds();
+  putRestingIslandsToSleep(h);
 }
 
-// Sort and sweep along x: bodies sorted by the left edge of their bounds (insertion sort, nearly
-// linear because the order hardly changes between steps); each body is paired with the ones whose
-// left edge lies before its right edge, then the y extents are compared. Pairs of two static
-// bodies are skipped. Pairs come out sorted by (A, B), so impulses carry over by a merge walk.
-void World::findCandidatePairs() {
+void World::wakeDisturbedBodies() {
+  for (Body& body : bodies_) {
+    if (body.asleep && disturbed(body)) body.wake();
+  }
+}
+
+void World::findContacts() {
+  findContacts(settings_.dt / settings_.substeps);
+}
+
+// Candidate pairs and the last substep's manifolds are both sorted by (A, B), so one merge walk
+// keeps the manifolds of sleeping pairs and carries impulses over to the recomputed ones.
+void World::findContacts(double h) {
+  previousManifolds_.swap(manifolds_);
+  manifolds_.clear();
+  findCandidatePairs(h);
+  ManifoldIterator old = previousManifolds_.cbegin();
+  for (const BodyPair& pair : candidatePairs_) {
+    old = keepSleepingManifolds(old, pair);
+    Manifold manifold;
+    if (!collidePair(pair, h, manifold)) continue;
+    if (old != previousManifolds_.cend() && keyOf(*old) == pair) carryOverImpulses(*old, manifold);
+    manifolds_.push_back(manifold);
+  }
+  keepSleepingManifolds(old, {int(bodies_.size()), 0});
+}
+
+// Old manifolds before `before`: those without an awake body are kept (their bodies have not
+// moved, so the narrow phase would find them again); the rest are gone or recomputed.
+World::ManifoldIterator World::keepSleepingManifolds(ManifoldIterator old, const BodyPair& before) {
+  for (; old != previousManifolds_.cend() && keyOf(*old) < before; ++old) {
+    if (involvesAwakeBody(*old)) continue;
+    manifolds_.push_back(*old);
+    ++statistics_.keptManifolds;
+  }
+  return old;
+}
+
+bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
+  const Body& a = bodies_[pair.first];
+  const Body& b = bodies_[pair.second];
+  ++statistics_.narrowPhasePairs;
+  manifold.bodyA = pair.first;
+  manifold.bodyB = pair.second;
+  if (collide(a, b, contactDistance(a, b, h), manifold) == 0) return false;
+  manifold.friction = mixFriction(a.friction, b.friction);
+  manifold.restitution = mixRestitution(a.restitution, b.restitution);
+  return true;
+}
+
+// Speculative contacts: the gap the pair can close within the substep is added to the margin.
+double World::contactDistance(const Body& a, const Body& b, double h) const {
+  if (!settings_.speculativeContacts) return settings_.contactMargin;
+  return settings_.contactMargin + (b.velocity - a.velocity).norm() * h;
+}
+
+bool World::involvesAwakeBody(const Manifold& manifold) const {
+  return bodies_[manifold.bodyA].isAwake() || bodies_[manifold.bodyB].isAwake();
+}
+
+// Sort and sweep along x: bodies sorted by the left edge of their bounds, each paired with the
+// ones whose left edge lies before its right edge, then the y extents compared. Pairs without an
+// awake body (two static, sleeping, or one of each) are skipped. Pairs come out sorted by (A, B).
+void World::findCandidatePairs(double h) {
+  computeSweepBounds(h);
+  sortSweepOrder();
   const double margin = settings_.contactMargin;
-  auto left = [this](int i) { return bodies_[i].bounds.lower.x(); };
+  candidatePairs_.clear();
+  for (size_t i = 0; i < sweepOrder_.size(); ++i) {
+    const int first = sweepOrder_[i];
+    const Aabb& firstBounds = sweepBounds_[first];
+    for (size_t j = i + 1; j < sweepOrder_.size(); ++j) {
+      const int second = sweepOrder_[j];
+      const Aabb& secondBounds = sweepBounds_[second];
+      if (secondBounds.lower.x() > firstBounds.upper.x() + margin) break;
+      if (!bodies_[first].isAwake() && !bodies_[second].isAwake()) continue;
+      if (secondBounds.lower.y() > firstBounds.upper.y() + margin ||
+          firstBounds.lower.y() > secondBounds.upper.y() + margin) {
+        continue;
+      }
+      candidatePairs_.emplace_back(std::min(first, second), std::max(first, second));
+    }
+  }
+  std::sort(candidatePairs_.begin(), candidatePairs_.end());
+}
+
+// Each body's bounds, grown by the distance it covers in the substep when contacts are
+// speculative.
+void World::computeSweepBounds(double h) {
+  sweepBounds_.resize(bodies_.size());
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    const Body& body = bodies_[i];
+    const double reach = settings_.speculativeContacts ? body.velocity.norm() * h : 0.0;
+    sweepBounds_[i] = {body.bounds.lower - Vec2(reach, reach),
+                       body.bounds.upper + Vec2(reach, reach)};
+  }
+}
+
+// Insertion sort by left edge: nearly linear, because the order hardly changes between steps.
+void World::sortSweepOrder() {
+  auto left = [this](int i) { return sweepBounds_[i].lower.x(); };
   for (size_t i = 1; i < sweepOrder_.size(); ++i) {
     const int body = sweepOrder_[i];
     size_t j = i;
     for (; j > 0 && left(sweepOrder_[j - 1]) > left(body); --j) sweepOrder_[j] = sweepOrder_[j - 1];
     sweepOrder_[j] = body;
   }
-  candidatePairs_.clear();
-  for (size_t i = 0; i < sweepOrder_.size(); ++i) {
-    const Body& first = bodies_[sweepOrder_[i]];
-    for (size_t j = i + 1; j < sweepOrder_.size(); ++j) {
-      const Body& second = bodies_[sweepOrder_[j]];
-      if (second.bounds.lower.x() > first.bounds.upper.x() + margin) break;
-      if (first.isStatic() && second.isStatic()) continue;
-      if (second.bounds.lower.y() > first.bounds.upper.y() + margin ||
-          first.bounds.lower.y() > second.bounds.upper.y() + margin) {
-        continue;
-      }
-      candidatePairs_.emplace_back(std::min(sweepOrder_[i], sweepOrder_[j]),
-                                   std::max(sweepOrder_[i], sweepOrder_[j]));
-    }
-  }
-  std::sort(candidatePairs_.begin(), candidatePairs_.end());
 }
 
-void World::carryOverImpulses(std::vector<Manifold>& previous) {
-  auto key = [](const Manifold& m) { return std::make_pair(m.bodyA, m.bodyB); };
-  auto old = previous.begin();
-  for (Manifold& manifold : manifolds_) {
-    while (old != previous.end() && key(*old) < key(manifold)) ++old;
-    if (old == previous.end() || key(*old) != key(manifold)) continue;
-    for (int i = 0; i < manifold.pointCount; ++i) {
-      ContactPoint& point = manifold.points[i];
-      for (int j = 0; j < old->pointCount; ++j) {
-        if (old->points[j].id != point.id) continue;
-        point.normalImpulse = old->points[j].normalImpulse;
-        point.tangentImpulse = old->points[j].tangentImpulse;
-      }
-    }
+// Islands by union-find: every contact between two dynamic bodies joins their islands. Static
+// bodies join none, so a floor does not make the whole scene one island.
+void World::buildIslands() {
+  islandParent_.resize(bodies_.size());
+  std::iota(islandParent_.begin(), islandParent_.end(), 0);
+  for (const Manifold& manifold : manifolds_) {
+    if (bodies_[manifold.bodyA].isStatic() || bodies_[manifold.bodyB].isStatic()) continue;
+    islandParent_[islandOf(manifold.bodyA)] = islandOf(manifold.bodyB);
   }
 }
 
-void World::integrateVelocities() {
+/// The root of the body's island (path halving keeps the trees flat).
+int World::islandOf(int body) {
+  while (islandParent_[body] != body) {
+    islandParent_[body] = islandParent_[islandParent_[body]];
+    body = islandParent_[body];
+  }
+  return body;
+}
+
+// An awake body touching a sleeping one wakes the sleeper's whole island, so the island is
+// solved as one again, with the manifolds it kept as warm-start data.
+void World::wakeTouchedIslands() {
+  if (!settings_.sleeping) return;
+  buildIslands();
+  islandAwake_.assign(bodies_.size(), 0);
+  for (int i = 0; i < int(bodies_.size()); ++i) {
+    if (bodies_[i].isAwake()) islandAwake_[islandOf(i)] = 1;
+  }
+  for (int i = 0; i < int(bodies_.size()); ++i) {
+    if (bodies_[i].asleep && islandAwake_[islandOf(i)]) bodies_[i].wake();
+  }
+}
+
+void World::integrateVelocities(double h) {
   for (Body& body : bodies_) {
-    if (body.isStatic()) continue;
+    if (!body.isAwake()) continue;
+    ++statistics_.awakeBodies;
     body.lastAcceleration = settings_.gravity + body.inverseMass * body.force;
-    body.velocity += settings_.dt * body.lastAcceleration;
-    body.angularVelocity += settings_.dt * body.inverseInertia * body.torque;
+    body.velocity += h * body.lastAcceleration;
+    body.angularVelocity += h * body.inverseInertia * body.torque;
     body.force.setZero();
     body.torque = 0.0;
   }
 }
 
-void World::integratePositions() {
+// All manifolds when none was kept asleep (then every one has an awake body); otherwise a copy
+// of those with an awake body, written back after the solve.
+std::vector<Manifold>& World::manifoldsToSolve() {
+  solvedIndex_.clear();
+  if (statistics_.keptManifolds == 0) {
+    statistics_.solvedManifolds = int(manifolds_.size());
+    return manifolds_;
+  }
+  solverManifolds_.clear();
+  for (int i = 0; i < int(manifolds_.size()); ++i) {
+    if (!involvesAwakeBody(manifolds_[i])) continue;
+    solverManifolds_.push_back(manifolds_[i]);
+    solvedIndex_.push_back(i);
+  }
+  statistics_.solvedManifolds = int(solverManifolds_.size());
+  return solverManifolds_;
+}
+
+void World::storeSolvedManifolds() {
+  for (size_t k = 0; k < solvedIndex_.size(); ++k) {
+    manifolds_[solvedIndex_[k]] = solverManifolds_[k];
+  }
+}
+
+void World::integratePositions(double h) {
   for (Body& body : bodies_) {
-    if (body.isStatic()) continue;
-    body.position += settings_.dt * body.velocity;
-    body.angle += settings_.dt * body.angularVelocity;
+    if (!body.isAwake()) continue;
+    body.position += h * body.velocity;
+    body.angle += h * body.angularVelocity;
     body.updateCache();
   }
+}
+
+// An island sleeps when its most restless body has rested for timeToSleep (Box2D's rule): one
+// moving body keeps the whole island awake.
+void World::putRestingIslandsToSleep(double h) {
+  if (!settings_.sleeping) return;
+  islandRested_.assign(bodies_.size(), std::numeric_limits<double>::infinity());
+  for (int i = 0; i < int(bodies_.size()); ++i) {
+    if (!bodies_[i].isAwake()) continue;
+    updateSleepTime(bodies_[i], h);
+    double& rested = islandRested_[islandOf(i)];
+    rested = std::min(rested, bodies_[i].sleepTime);
+  }
+  for (int i = 0; i < int(bodies_.size()); ++i) {
+    if (bodies_[i].isAwake() && islandRested_[islandOf(i)] >= settings_.timeToSleep) {
+      fallAsleep(bodies_[i]);
+    }
+  }
+}
+
+void World::updateSleepTime(Body& body, double h) const {
+  const bool resting = body.velocity.norm() < settings_.sleepLinearSpeed &&
+                       std::abs(body.angularVelocity) < settings_.sleepAngularSpeed;
+  body.sleepTime = resting ? body.sleepTime + h : 0.0;
 }
 
 }  // namespace impulse2d

@@ -39,7 +39,23 @@ struct Body {
   Mat2 rotation = Mat2::Identity();  ///< cached rotation(angle)
   Aabb bounds;                       ///< cached world bounding box
 
+  /// Put to sleep with its island (world.h): not integrated, its contacts not solved. A sleeping
+  /// body has zero velocity; a velocity, force or impulse given to it wakes it at the next step.
+  bool asleep = false;
+  /// s. How long the body has been slower than the world's sleep thresholds.
+  double sleepTime = 0.0;
+
   bool isStatic() const { return type == BodyType::Static; }
+  /// Dynamic and not asleep: integrated and solved this step.
+  bool isAwake() const { return !isStatic() && !asleep; }
+
+  /// Wakes the body (its island follows at the next step) and restarts its sleep timer. Call it
+  /// after moving a sleeping body by hand, so its contacts are found again.
+  void wake() {
+    if (!asleep) return;
+    asleep = false;
+    sleepTime = 0.0;
+  }
 
   /// Body-frame point -> world point.
   Vec2 toWorld(const Vec2& local) const { return position + rotation * local; }
@@ -52,12 +68,14 @@ struct Body {
 
   /// Applies an impulse (N s) at world point p: Δv = P/m, Δω = (r × P)/I.
   void applyImpulse(const Vec2& impulse, const Vec2& p) {
+    wake();
     velocity += inverseMass * impulse;
     angularVelocity += inverseInertia * cross(Vec2(p - position), impulse);
   }
 
   /// Adds a force (N) acting at world point p for the next step.
   void applyForce(const Vec2& f, const Vec2& p) {
+    wake();
     force += f;
     torque += cross(Vec2(p - position), f);
   }

@@ -19,6 +19,24 @@ struct WorldSettings {
   /// whose correction left a hair's gap keeps its contact. Solvers treat a gap as speculative:
   /// they only act if the gap would close within the step.
   double contactMargin = 0.005;
+  /// Each step runs the whole pipeline this many times with dt/substeps: a cure for a time step
+  /// too large for the scene (deep overlaps, soft stacks) that keeps the step the caller sees.
+  int substeps = 1;
+  /// Fast bodies find their contacts one step early: the broad phase fattens each body's bounds
+  /// by |v|·dt and a pair keeps contact points while the gap is under contactMargin + |vB−vA|·dt,
+  /// so the solver can stop a fast small ball at a thin wall instead of letting it tunnel.
+  bool speculativeContacts = false;
+  /// Islands of bodies at rest go to sleep: they are not integrated, their contacts are neither
+  /// recomputed nor solved, until an awake body touches them or the user pushes one.
+  bool sleeping = false;
+  /// m/s. A body slower than this (and sleepAngularSpeed) counts as resting. Box2D's 0.01: a
+  /// hundredth of a body width of 1 m per second is invisible at 60 frames a second.
+  double sleepLinearSpeed = 0.01;
+  /// rad/s. The angular speed below which a body counts as resting: Box2D's 2 degrees a second.
+  double sleepAngularSpeed = 2.0 * 3.14159265358979323846 / 180.0;
+  /// s. An island sleeps once every body in it has rested this long (Box2D's half a second:
+  /// long enough that a body at the top of a bounce or a swing is not frozen).
+  double timeToSleep = 0.5;
 };
 
 /// The lecture's micro-collision resolver (lecture 3.6, Millington ch. 14-15).

@@ -1,25 +1,45 @@
 // The world: bodies, gravity, a fixed time step and one contact solver.
 //
-// ONE STEP, IN ORDER (semi-implicit, "symplectic", Euler):
-//   1. findContacts        broad phase (sort and sweep on bounding boxes), then the narrow phase
-//                          for each overlapping pair; impulses of the last step are carried over
-//                          to points with the same feature id (for warm starting).
-//   2. integrateVelocities v += (g + F/m)·dt, ω += (τ/I)·dt; the linear acceleration is kept in
-//                          Body::lastAcceleration; forces and torques are cleared.
-//   3. solveVelocities     the solver's contact impulses act on the new velocities.
-//   4. integratePositions  x += v·dt, θ += ω·dt, with the velocities after the impulses.
-//   5. solvePositions      the solver removes what penetration remains.
+// ONE STEP runs the substep below `substeps` times with h = dt/substeps (settings.h).
+// ONE SUBSTEP, IN ORDER (semi-implicit, "symplectic", Euler):
+//   1. wakeDisturbedBodies a sleeping body the user gave a velocity or force wakes.
+//   2. findContacts        broad phase (sort and sweep on bounding boxes, fattened by |v|·h with
+//                          speculative contacts), then the narrow phase for each overlapping pair
+//                          with an awake body; a pair of sleeping or static bodies keeps its
+//                          manifold as it was. Impulses of the last step are carried over to
+//                          points with the same feature id (for warm starting).
+//   3. wakeTouchedIslands  islands are the dynamic bodies joined by contacts (static bodies join
+//                          none); an island with an awake body wakes whole.
+//   4. integrateVelocities awake bodies: v += (g + F/m)·h, ω += (τ/I)·h; the linear acceleration
+//                          is kept in Body::lastAcceleration; forces and torques are cleared.
+//   5. solveVelocities     the solver's contact impulses act on the new velocities; it is given
+//                          only the manifolds with an awake body.
+//   6. integratePositions  awake bodies: x += v·h, θ += ω·h, with the velocities after impulses.
+//   7. solvePositions      the solver removes what penetration remains.
+//   8. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
+//                          thresholds for timeToSleep sleeps; its velocities become zero.
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "impulse2d/simulation.h"
 
 namespace impulse2d {
 
+/// What the last substep modelled, so tests and benchmarks can see that sleeping bodies cost
+/// nothing.
+struct StepStatistics {
+  int awakeBodies = 0;       ///< dynamic bodies integrated
+  int narrowPhasePairs = 0;  ///< pairs given to collide()
+  int keptManifolds = 0;     ///< manifolds of sleeping (or sleeping and static) pairs kept as is
+  int solvedManifolds = 0;   ///< manifolds given to the solver
+};
+
 class World : public Simulation {
  public:
+  /// Throws std::invalid_argument when settings.substeps < 1.
   World(const WorldSettings& settings, std::unique_ptr<ContactSolver> solver);
 
   /// Adds a body and returns its index.
@@ -28,32 +48,63 @@ class World : public Simulation {
   void step() override;
 
   const std::vector<Body>& bodies() const override { return bodies_; }
-  /// Bodies may be changed between steps (call Body::updateCache after moving one).
+  /// Bodies may be changed between steps (call Body::updateCache after moving one, and
+  /// Body::wake if it sleeps).
   std::vector<Body>& bodies() { return bodies_; }
+  /// Every contact, sleeping ones with the impulses of their last awake step; with substeps,
+  /// those of the last substep.
   const std::vector<Manifold>& manifolds() const override { return manifolds_; }
   std::string solverName() const override { return solver_->name(); }
   const WorldSettings& settings() const override { return settings_; }
   long stepCount() const override { return stepCount_; }
+  /// Observed solver events index the manifolds given to the solver: all of them unless some
+  /// sleep.
   void setObserver(SolverObserver* observer) override { observer_ = observer; }
 
   ContactSolver& solver() { return *solver_; }
+  const StepStatistics& lastStepStatistics() const { return statistics_; }
 
-  /// Step 1 alone: rebuilds the manifolds from the current positions.
+  /// Step 2 alone: rebuilds the manifolds from the current positions.
   void findContacts();
 
  private:
-  void findCandidatePairs();
-  void carryOverImpulses(std::vector<Manifold>& previous);
-  void integrateVelocities();
-  void integratePositions();
+  using BodyPair = std::pair<int, int>;
+  using ManifoldIterator = std::vector<Manifold>::const_iterator;
+
+  void substep(double h);
+  void wakeDisturbedBodies();
+  void findContacts(double h);
+  void findCandidatePairs(double h);
+  void computeSweepBounds(double h);
+  void sortSweepOrder();
+  ManifoldIterator keepSleepingManifolds(ManifoldIterator old, const BodyPair& before);
+  bool collidePair(const BodyPair& pair, double h, Manifold& manifold);
+  double contactDistance(const Body& a, const Body& b, double h) const;
+  bool involvesAwakeBody(const Manifold& manifold) const;
+  void buildIslands();
+  int islandOf(int body);
+  void wakeTouchedIslands();
+  void integrateVelocities(double h);
+  std::vector<Manifold>& manifoldsToSolve();
+  void storeSolvedManifolds();
+  void integratePositions(double h);
+  void putRestingIslandsToSleep(double h);
+  void updateSleepTime(Body& body, double h) const;
 
   WorldSettings settings_;
   std::unique_ptr<ContactSolver> solver_;
   std::vector<Body> bodies_;
-  std::vector<Manifold> manifolds_;
-  std::vector<Manifold> previousManifolds_;
-  std::vector<std::pair<int, int>> candidatePairs_;
+  std::vector<Manifold> manifolds_;          ///< sorted by (bodyA, bodyB)
+  std::vector<Manifold> previousManifolds_;  ///< the last substep's, for carrying impulses over
+  std::vector<Manifold> solverManifolds_;    ///< the awake ones, when some sleep
+  std::vector<int> solvedIndex_;             ///< where each of solverManifolds_ sits in manifolds_
+  std::vector<BodyPair> candidatePairs_;
   std::vector<int> sweepOrder_;
+  std::vector<Aabb> sweepBounds_;     ///< by body: bounds fattened for speculative contacts
+  std::vector<int> islandParent_;     ///< union-find forest of the islands, by body
+  std::vector<char> islandAwake_;     ///< by island root
+  std::vector<double> islandRested_;  ///< s, by island root: the shortest sleep time in it
+  StepStatistics statistics_;
   SolverObserver* observer_ = nullptr;
   long stepCount_ = 0;
 };

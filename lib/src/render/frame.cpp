@@ -110,6 +110,8 @@ std::vector<BodyState> classifyBodies(const std::vector<Body>& bodies,
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (bodies[i].isStatic()) {
       states[i] = BodyState::Static;
+    } else if (bodies[i].asleep) {
+      states[i] = BodyState::Sleeping;
     } else if (contacts[i] == 0) {
       states[i] = BodyState::Flying;
     } else if (sliding[i]) {

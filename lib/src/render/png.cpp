@@ -2,6 +2,9 @@
 #include "impulse2d/render/png.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <memory>
 #include <system_error>
 #include <vector>
@@ -33,19 +36,45 @@ int pngBytes(const Canvas& canvas, std::vector<std::uint8_t>& bytes) {
   return channels;
 }
 
+/// stb's write callback: appends the next encoded bytes to the vector `context`.
+void appendBytes(void* context, void* data, int size) {
+  auto* file = static_cast<std::vector<std::uint8_t>*>(context);
+  const auto* begin = static_cast<const std::uint8_t*>(data);
+  file->insert(file->end(), begin, begin + size);
+}
+
+/// The PNG file's bytes. stb's own file writer ignores write errors (a full disk would leave a
+/// truncated PNG), so the file is encoded in memory and written by writeFile, which sees them.
+std::vector<std::uint8_t> encodePng(const Canvas& canvas) {
+  std::vector<std::uint8_t> pixels;
+  const int channels = pngBytes(canvas, pixels);
+  std::vector<std::uint8_t> file;
+  if (stbi_write_png_to_func(appendBytes, &file, canvas.width(), canvas.height(), channels,
+                             pixels.data(), canvas.width() * channels) == 0) {
+    throw RenderError("cannot encode a " + std::to_string(canvas.width()) + " x " +
+                      std::to_string(canvas.height()) + " image as PNG");
+  }
+  return file;
+}
+
+/// Writes the bytes to path; on any error removes what was written and throws naming the cause.
+void writeFile(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  out.close();
+  if (out) return;
+  const std::string reason = std::strerror(errno);
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+  throw RenderError("cannot write image '" + path.string() + "': " + reason);
+}
+
 }  // namespace
 
 void writePng(const std::filesystem::path& path, const Canvas& canvas) {
   std::filesystem::path temporary = path;
   temporary += ".tmp";
-  std::vector<std::uint8_t> bytes;
-  const int channels = pngBytes(canvas, bytes);
-  if (stbi_write_png(temporary.c_str(), canvas.width(), canvas.height(), channels, bytes.data(),
-                     canvas.width() * channels) == 0) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw RenderError("cannot write image '" + temporary.string() + "'");
-  }
+  writeFile(temporary, encodePng(canvas));
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {

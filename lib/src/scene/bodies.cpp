@@ -2,6 +2,7 @@
 // expand to ordinary boxes.
 #include <cmath>
 #include <map>
+#include <sstream>
 
 #include "impulse2d/shape.h"
 #include "scene_tables.h"
@@ -152,6 +153,31 @@ toml::source_region nameOrigin(const toml::table& table) {
   return name ? name->source() : table.source();
 }
 
+bool positiveAndFinite(double value) {
+  return std::isfinite(value) && value > 0.0;
+}
+
+/// A body the engine can integrate: a finite place, and for a dynamic body a mass and moment of
+/// inertia whose inverses are finite too. Each number in the file can be finite while their
+/// product is not: a radius of 1e200 overflows the mass, a size of 1e-160 underflows it to 0
+/// (an infinite inverse mass), a stack offset 1e308 m a level places boxes at infinity.
+void rejectUnsimulable(const BodyDef& definition, const toml::source_region& origin) {
+  const std::string name = "body '" + definition.name + "'";
+  if (!definition.position.allFinite()) {
+    fail(origin, name + " is placed at a non-finite position; its numbers are too large");
+  }
+  if (definition.type == BodyType::Static) return;
+  const MassProperties mass = computeMass(definition.shape, definition.density);
+  if (!positiveAndFinite(mass.mass) || !positiveAndFinite(1.0 / mass.mass) ||
+      !positiveAndFinite(mass.inertia) || !positiveAndFinite(1.0 / mass.inertia)) {
+    std::ostringstream numbers;
+    numbers << "mass " << mass.mass << " kg and moment of inertia " << mass.inertia << " kg m^2";
+    fail(origin, name + " has " + numbers.str() +
+                     "; both and their inverses must be finite and > 0 (its size or density is "
+                     "too large or too small)");
+  }
+}
+
 void rejectRepeatedNames(const Scene& scene, const std::vector<toml::source_region>& origins) {
   std::map<std::string, size_t> firstUse;
   for (size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -184,6 +210,7 @@ void readBodies(const toml::table& root, Scene& scene) {
       origins.resize(scene.bodies.size(), table->source());
     }
   }
+  for (size_t i = 0; i < scene.bodies.size(); ++i) rejectUnsimulable(scene.bodies[i], origins[i]);
   rejectRepeatedNames(scene, origins);
 }
 

@@ -1,0 +1,71 @@
+// The benchmark scenes and method settings (benchmark_scenes.h).
+#include "benchmark_scenes.h"
+
+#include "impulse2d/scene_file.h"
+
+using namespace impulse2d;
+
+namespace benchmarks {
+
+namespace {
+
+/// The material of the field's benchmark boxes.
+constexpr double kBoxFriction = 0.6;
+constexpr double kGravity = -10.0;
+/// m of ground beyond the pyramid's base on either side.
+constexpr double kGroundMargin = 10.0;
+
+}  // namespace
+
+Scene shippedScene(const std::string& name) {
+  Scene scene = loadSceneFile(IMPULSE2D_SOURCE_DIR "/demos/scenes/" + name + ".toml");
+  scene.world.sleeping = false;
+  return scene;
+}
+
+double settledTime(const Scene& scene) {
+  return scene.name == "rain" ? 4.0 : 1.0;
+}
+
+Scene pyramidScene(int rows) {
+  Scene scene;
+  scene.name = "pyramid" + std::to_string(rows);
+  scene.world.gravity = Vec2(0.0, kGravity);
+  scene.world.sleeping = false;
+  BodyDef ground;
+  ground.name = "ground";
+  ground.type = BodyType::Static;
+  ground.shape = makeBox(rows + 2.0 * kGroundMargin, 1.0);
+  ground.position = Vec2(0.0, -0.5);
+  ground.friction = kBoxFriction;
+  scene.bodies.push_back(ground);
+  BodyDef box;
+  box.friction = kBoxFriction;
+  addPyramid(scene, rows, Vec2(1.0, 1.0), Vec2::Zero(), box);
+  return scene;
+}
+
+std::vector<int> scalingFamilyRows() {
+  return {4, 6, 9, 12, 14, 20, 28, 40, 56, 80, 99};
+}
+
+int pyramidBoxes(int rows) {
+  return rows * (rows + 1) / 2;
+}
+
+std::string iterationKey(const std::string& solver) {
+  if (solver == "micro") return "velocity_iterations_per_contact";
+  if (solver == "reference") return "";
+  return "velocity_iterations";  // sequential and box2d
+}
+
+Scene withMethod(Scene scene, const std::string& solver, int iterations) {
+  scene.solver = solver;
+  scene.solverSettings = SolverSettings{};
+  if (iterations > 0 && !iterationKey(solver).empty()) {
+    applySetting(scene, "solver." + iterationKey(solver) + "=" + std::to_string(iterations));
+  }
+  return scene;
+}
+
+}  // namespace benchmarks

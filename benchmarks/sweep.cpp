@@ -1,0 +1,159 @@
+// The sweep behind docs/charts/ (issue 7): every method × its iterations (1 to 64) × time step
+// (1/30 to 1/240 s) on three scenes, each with one error of its own, and the cost per step of
+// each method's defaults on pyramids of 10 to about 5000 boxes. A progress bar goes to stderr,
+// the points to OUTDIR/sweep.csv, pareto.csv and scaling.csv (docs/charts/*.gp draw them), and the
+// tables to stdout as Markdown (docs/performance.md).
+//
+//   sweep OUTDIR            the full sweep (about ten minutes)
+//   sweep --quick OUTDIR    one iteration count and one time step per method, in seconds
+//
+// Every point plotted is measured; a point whose run would not fit its time budget is written
+// with status "over budget" (or "skipped" when a cheaper point already was) and never plotted.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "measures/benchmark_scenes.h"
+#include "measures/measured_run.h"
+#include "measures/progress_bar.h"
+#include "measures/scaling.h"
+#include "measures/sweep_points.h"
+
+using namespace impulse2d;
+using namespace benchmarks;
+
+namespace {
+
+/// A scene of the sweep and the one error it is judged by.
+struct Panel {
+  std::string scene;
+  std::string errorName;
+  double runTime;  ///< s simulated
+  std::function<double(const RunFigures&)> error;
+  bool referenceAffordable;  ///< the dense Lemke solve runs here (about 40 contact points)
+};
+
+const std::vector<Panel> kPanels = {
+    {"stack20", "contact-force error (RMS relative) 1-4 s", 4.0,
+     [](const RunFigures& f) { return f.stackForceError; }, true},
+    {"pyramid20", "settled drift 1-4 s (m)", 4.0, [](const RunFigures& f) { return f.drift; },
+     false},
+    {"rain", "largest penetration at rest 4-6 s (m)", 6.0,
+     [](const RunFigures& f) { return f.largestPenetration; }, false},
+};
+
+struct Grid {
+  std::vector<std::string> solvers;
+  std::vector<int> iterations;
+  std::vector<int> stepsPerSecond;
+  /// s of stepping one point may take; a run that reaches it stops and is not plotted.
+  double pointBudget;
+};
+
+Grid sweepGrid(bool quick) {
+  if (quick) return {{"micro", "sequential", "reference", "box2d"}, {8}, {60}, 5.0};
+  return {{"micro", "sequential", "reference", "box2d"},
+          {1, 2, 4, 8, 16, 32, 64},
+          {30, 60, 120, 240},
+          10.0};
+}
+
+/// The points of the sweep in the order they run: cheap ones first within each method, so a
+/// point over budget lets the dearer ones behind it be skipped.
+std::vector<SweepPoint> sweepPoints(const Grid& grid) {
+  std::vector<SweepPoint> points;
+  for (size_t panel = 0; panel < kPanels.size(); ++panel) {
+    for (const std::string& solver : grid.solvers) {
+      const bool reference = solver == "reference";
+      if (reference && !kPanels[panel].referenceAffordable) continue;
+      for (int stepsPerSecond : grid.stepsPerSecond) {
+        for (int iterations : grid.iterations) {
+          points.push_back({kPanels[panel].scene, kPanels[panel].errorName, solver,
+                            reference ? 0 : iterations, stepsPerSecond});
+          if (reference) break;  // no iteration knob: one point per time step
+        }
+      }
+    }
+  }
+  return points;
+}
+
+/// A point at least as dear as one already over budget: same scene and method, no fewer
+/// iterations, no larger time step.
+bool dearerThanOverBudget(const SweepPoint& point, const std::vector<SweepPoint>& done) {
+  for (const SweepPoint& other : done) {
+    if (other.status == kOverBudget && other.scene == point.scene && other.solver == point.solver &&
+        point.iterations >= other.iterations && point.stepsPerSecond >= other.stepsPerSecond) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void measurePoint(SweepPoint& point, const Panel& panel, double budget) {
+  Scene scene = withMethod(shippedScene(panel.scene), point.solver, point.iterations);
+  scene.world.dt = 1.0 / point.stepsPerSecond;
+  RunPlan plan;
+  plan.steps = std::lround(panel.runTime * point.stepsPerSecond);
+  plan.settledTime = settledTime(scene);
+  plan.timeBudget = budget;
+  MeasuredRun run(scene, plan);
+  while (!run.done()) run.step();
+  const RunFigures figures = run.figures();
+  point.microsecondsPerStep = figures.medianMicroseconds;
+  point.error = panel.error(figures);
+  point.status = figures.completed ? kMeasured : kOverBudget;
+}
+
+const Panel& panelOf(const SweepPoint& point) {
+  for (const Panel& panel : kPanels) {
+    if (panel.scene == point.scene) return panel;
+  }
+  throw std::logic_error("no panel for " + point.scene);
+}
+
+void runSweep(std::vector<SweepPoint>& points, double budget, ProgressBar& progress) {
+  std::vector<SweepPoint> done;
+  for (SweepPoint& point : points) {
+    progress.show(describe(point));
+    if (dearerThanOverBudget(point, done)) {
+      point.status = kSkipped;
+    } else {
+      measurePoint(point, panelOf(point), budget);
+    }
+    done.push_back(point);
+    progress.advance();
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc == 3 && std::string(argv[1]) == "--quick";
+  if (argc != 2 && !quick) {
+    std::fprintf(stderr, "usage: sweep [--quick] OUTDIR\n");
+    return 2;
+  }
+  const std::string outputDirectory = argv[argc - 1];
+  const auto start = std::chrono::steady_clock::now();
+  const Grid grid = sweepGrid(quick);
+  std::vector<SweepPoint> points = sweepPoints(grid);
+  const std::vector<int> rows = quick ? std::vector<int>{4, 9, 14} : scalingFamilyRows();
+  std::vector<ScalingPoint> scaling = scalingPoints(rows);
+  ProgressBar progress(points.size() + scaling.size());
+  runSweep(points, grid.pointBudget, progress);
+  measureScaling(scaling, progress);
+  markParetoFront(points);
+  writeSweepCsv(outputDirectory + "/sweep.csv", points);
+  writeParetoCsv(outputDirectory + "/pareto.csv", points);
+  writeScalingCsv(outputDirectory + "/scaling.csv", scaling);
+  const double minutes =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.0;
+  printSweepTables(points, minutes);
+  printScalingTable(scaling);
+  return 0;
+}

@@ -1,0 +1,135 @@
+// Deterministic stress runs of one method (run.h).
+#include "run.h"
+
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "impulse2d/box2d/box2d_simulation.h"
+#include "impulse2d/scene_file.h"
+#include "impulse2d/world.h"
+
+namespace impulse2d::stress {
+
+std::vector<Method> baseMethods() {
+  return {
+      {"micro", "micro", {}},
+      {"micro − acceleration removal", "micro", {"solver.remove_acceleration_velocity=false"}},
+      {"micro − low-speed restitution", "micro", {"solver.lower_restitution_at_low_speed=false"}},
+      {"micro − friction", "micro", {"solver.friction=false"}},
+      {"sequential", "sequential", {}},
+      {"sequential − warm starting", "sequential", {"solver.warm_starting=false"}},
+      {"sequential − accumulation",
+       "sequential",
+       {"solver.accumulate_impulses=false", "solver.warm_starting=false"}},
+      {"reference", "reference", {}},
+      {"box2d", kBox2dName, {}},
+  };
+}
+
+std::vector<Method> extraMethods() {
+  return {
+      {"sequential − accumulation + 4 substeps",
+       "sequential",
+       {"solver.accumulate_impulses=false", "solver.warm_starting=false", "world.substeps=4"}},
+      {"sequential + 4 substeps", "sequential", {"world.substeps=4"}},
+      {"sequential + speculative contacts", "sequential", {"world.speculative_contacts=true"}},
+      {"sequential − bias", "sequential", {"solver.penetration_bias=false"}},
+      {"micro − both bounce fixes",
+       "micro",
+       {"solver.remove_acceleration_velocity=false",
+        "solver.lower_restitution_at_low_speed=false"}},
+  };
+}
+
+Method findMethod(const std::string& label) {
+  for (const std::vector<Method>& methods : {baseMethods(), extraMethods()}) {
+    for (const Method& method : methods) {
+      if (method.label == label) return method;
+    }
+  }
+  throw std::invalid_argument("unknown stress method '" + label + "'");
+}
+
+std::string slug(const std::string& label) {
+  std::string out;
+  for (size_t i = 0; i < label.size(); ++i) {
+    const unsigned char c = label[i];
+    if (std::isalnum(c)) {
+      out += char(c);
+    } else if (label.compare(i, 3, "−") == 0) {
+      out += "no";
+      i += 2;
+    } else if (c == '+') {
+      out += "with";
+    } else if (!out.empty() && out.back() != '-') {
+      out += '-';
+    }
+  }
+  return out;
+}
+
+bool canRun(const StressScene& stress, const Method& method) {
+  return stress.interventions.empty() || method.solver != kBox2dName;
+}
+
+Scene sceneFor(const StressScene& stress, const Method& method, double knob) {
+  Scene scene = stress.build(knob);
+  scene.solver = method.solver;
+  scene.world.sleeping = false;
+  for (const std::string& setting : method.settings) applySetting(scene, setting);
+  return scene;
+}
+
+namespace {
+
+/// The first body whose state is not finite, or null.
+const Body* firstNonFinite(const Simulation& simulation) {
+  for (const Body& body : simulation.bodies()) {
+    const bool finite = body.position.allFinite() && std::isfinite(body.angle) &&
+                        body.velocity.allFinite() && std::isfinite(body.angularVelocity);
+    if (!finite) return &body;
+  }
+  return nullptr;
+}
+
+void intervene(const StressScene& stress, Simulation& simulation) {
+  for (const Intervention& intervention : stress.interventions) {
+    if (intervention.step != simulation.stepCount()) continue;
+    intervention.apply(dynamic_cast<World&>(simulation).bodies());
+  }
+}
+
+Outcome stoppedAt(const std::string& reason) {
+  return {std::numeric_limits<double>::infinity(), true, reason};
+}
+
+}  // namespace
+
+Outcome runStress(const StressScene& stress, const Method& method, double knob,
+                  const StepWatcher& watch) {
+  const Scene scene = sceneFor(stress, method, knob);
+  std::unique_ptr<Simulation> simulation = makeSimulation(scene);
+  std::unique_ptr<Probe> probe = stress.probe(scene);
+  probe->observe(*simulation);
+  if (watch) watch(*simulation);
+  for (long step = 0; step < scene.steps; ++step) {
+    intervene(stress, *simulation);
+    try {
+      simulation->step();
+    } catch (const std::exception& error) {
+      return stoppedAt(std::string(error.what()) + " at step " + std::to_string(step + 1));
+    }
+    if (const Body* body = firstNonFinite(*simulation)) {
+      return stoppedAt("body " + body->name + " became non-finite at step " +
+                       std::to_string(simulation->stepCount()));
+    }
+    probe->observe(*simulation);
+    if (watch) watch(*simulation);
+  }
+  const double measure = probe->measure();
+  return {measure, measure > stress.criterion.limit, ""};
+}
+
+}  // namespace impulse2d::stress

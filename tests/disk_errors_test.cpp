@@ -1,0 +1,121 @@
+// A full disk: CSV rows, frames and contact sheets whose writing fails give one clear error (exit
+// 1 from i2d) and never leave a half-written file under the final name. Linux's /dev/full fails
+// every write with ENOSPC; a symbolic link from the temporary file's name to it makes any file
+// "on a full disk". (A missing directory is tested in i2d_test.cpp and frame_writer_test.cpp.)
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "impulse2d/render/frame_writer.h"
+#include "impulse2d/render/png.h"
+
+namespace fs = std::filesystem;
+using namespace impulse2d::render;
+
+namespace {
+
+const std::string kBinary = IMPULSE2D_BINARY_DIR "/apps/i2d";
+const std::string kScenes = IMPULSE2D_SOURCE_DIR "/demos/scenes/";
+const std::string kFullDisk = "/dev/full";
+const std::string kNoSpace = "No space left on device";
+
+/// A fresh directory under /tmp, removed with everything in it at the end of the test.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    std::string pattern = (fs::temp_directory_path() / "disk_errors_test.XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
+  }
+  ~TemporaryDirectory() { fs::remove_all(path_); }
+  const fs::path& path() const { return path_; }
+  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  fs::path path_;
+};
+
+/// Makes writing to `path` fail as on a full disk.
+void onFullDisk(const fs::path& path) {
+  fs::create_symlink(kFullDisk, path);
+}
+
+struct Outcome {
+  int exitCode = -1;
+  std::string err;
+};
+
+Outcome i2d(const std::string& arguments, const TemporaryDirectory& directory) {
+  const std::string err = directory / "stderr";
+  const int status = std::system((kBinary + " " + arguments + " >/dev/null 2>" + err).c_str());
+  std::ifstream in(err);
+  std::ostringstream text;
+  text << in.rdbuf();
+  fs::remove(err);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+Canvas greyFrame() {
+  return Canvas(64, 48, Color{128, 128, 128, 255});
+}
+
+}  // namespace
+
+TEST_CASE("a CSV on a full disk is one error line, exit code 1, and no file", "[disk][csv]") {
+  REQUIRE(fs::exists(kFullDisk));
+  // One step fits in the stream's buffer, so the error shows when the file is closed; the whole
+  // run does not, so it shows while rows are written.
+  for (const std::string steps : {"1", "360"}) {
+    const TemporaryDirectory directory;
+    const std::string csv = directory / "ball.csv";
+    onFullDisk(csv + ".tmp");
+    const Outcome outcome =
+        i2d("run " + kScenes + "bouncing_ball.toml --steps " + steps + " --csv " + csv, directory);
+    INFO(steps << " steps");
+    CHECK(outcome.exitCode == 1);
+    CHECK(outcome.err == "error: cannot write " + csv + ".tmp: " + kNoSpace + "\n");
+    CHECK(fs::is_empty(directory.path()));
+  }
+}
+
+TEST_CASE("a PNG on a full disk throws naming the cause and leaves no file", "[disk][png]") {
+  REQUIRE(fs::exists(kFullDisk));
+  const TemporaryDirectory directory;
+  const fs::path png = directory / "frame.png";
+  onFullDisk(directory / "frame.png.tmp");
+  CHECK_THROWS_WITH(writePng(png, greyFrame()), Catch::Contains(kNoSpace));
+  CHECK(fs::is_empty(directory.path()));
+}
+
+TEST_CASE("a frame on a full disk is not counted and leaves no file", "[disk][frames]") {
+  REQUIRE(fs::exists(kFullDisk));
+  const TemporaryDirectory directory;
+  FrameWriter frames(directory.path(), "scene");
+  onFullDisk(frames.framePath(0).string() + ".tmp");
+  CHECK_THROWS_WITH(frames.write(0, greyFrame()), Catch::Contains(kNoSpace));
+  CHECK(frames.frameCount() == 0);
+  CHECK(fs::is_empty(frames.directory()));
+}
+
+TEST_CASE("i2d run --frames on a full disk is one error line, exit code 1, and no sheet",
+          "[disk][frames]") {
+  REQUIRE(fs::exists(kFullDisk));
+  const TemporaryDirectory directory;
+  const fs::path scene = directory.path() / "bouncing_ball";
+  fs::create_directory(scene);
+  onFullDisk(scene / "bouncing_ball_sheet.png.tmp");
+  const Outcome outcome =
+      i2d("run " + kScenes + "bouncing_ball.toml --steps 2 --frames " + directory.path().string(),
+          directory);
+  CHECK(outcome.exitCode == 1);
+  CHECK(outcome.err == "error: cannot write image '" +
+                           (scene / "bouncing_ball_sheet.png.tmp").string() + "': " + kNoSpace +
+                           "\n");
+  CHECK_FALSE(fs::exists(scene / "bouncing_ball_sheet.png"));
+  CHECK_FALSE(fs::is_symlink(scene / "bouncing_ball_sheet.png.tmp"));
+}

@@ -1,0 +1,194 @@
+// Stability where methods fail: for each stress scene, a run on each side of the breaking point
+// docs/stability.md documents (the method holds on the easy side and fails on the hard side), and
+// the fix the page names holding where the method alone fails. Small, fast versions: only the
+// methods whose failure the scene is about, at knob values bracketing the documented point.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+#include "breaking_points.h"
+#include "stress_scene.h"
+
+using namespace impulse2d;
+using namespace impulse2d::stress;
+
+namespace {
+
+Outcome runAt(const std::string& scene, const std::string& method, double knob) {
+  const Outcome outcome = runStress(findStressScene(scene), findMethod(method), knob);
+  std::cout << "figure: " << scene << ", " << method << " at " << knob << ": " << outcome.measure
+            << (outcome.stopped.empty() ? "" : " (" + outcome.stopped + ")") << "\n";
+  return outcome;
+}
+
+bool holds(const std::string& scene, const std::string& method, double knob) {
+  return !runAt(scene, method, knob).failed;
+}
+
+bool fails(const std::string& scene, const std::string& method, double knob) {
+  return runAt(scene, method, knob).failed;
+}
+
+}  // namespace
+
+TEST_CASE("a stack of boxes stands up to the documented height", "[stability][stack]") {
+  CHECK(holds("box_stack", "sequential", 35));
+  CHECK(fails("box_stack", "sequential", 36));
+  CHECK(holds("box_stack", "box2d", 27));
+  CHECK(fails("box_stack", "box2d", 28));
+  SECTION("warm starting and accumulation are what let sequential impulses hold a tall stack") {
+    CHECK(holds("box_stack", "sequential − warm starting", 23));
+    CHECK(fails("box_stack", "sequential − warm starting", 24));
+    CHECK(holds("box_stack", "sequential − accumulation", 13));
+    CHECK(fails("box_stack", "sequential − accumulation", 14));
+  }
+}
+
+TEST_CASE("a stack of circles stands up to the documented height", "[stability][stack]") {
+  CHECK(holds("circle_stack", "sequential", 35));
+  CHECK(fails("circle_stack", "sequential", 36));
+  CHECK(holds("circle_stack", "box2d", 28));
+  CHECK(fails("circle_stack", "box2d", 29));
+}
+
+TEST_CASE("a pyramid stands up to the documented rows", "[stability][pyramid]") {
+  CHECK(holds("pyramid", "box2d", 13));
+  CHECK(fails("pyramid", "box2d", 14));
+  CHECK(holds("pyramid", "sequential − warm starting", 7));
+  CHECK(fails("pyramid", "sequential − warm starting", 8));
+  CHECK(holds("pyramid", "sequential", 20));
+}
+
+TEST_CASE(
+    "a heavy box on light ones sinks beyond the documented mass ratio, and sub-stepping "
+    "holds it",
+    "[stability][mass-ratio][substeps]") {
+  CHECK(holds("heavy_on_light", "sequential", 45));
+  CHECK(fails("heavy_on_light", "sequential", 60));
+  CHECK(holds("heavy_on_light", "sequential + 4 substeps", 60));
+  CHECK(holds("heavy_on_light", "micro", 1000));
+}
+
+TEST_CASE(
+    "a pyramid topped by a heavy box falls beyond the documented mass ratio, and "
+    "sub-stepping holds it",
+    "[stability][mass-ratio][substeps]") {
+  CHECK(holds("heavy_pyramid", "sequential", 120));
+  CHECK(fails("heavy_pyramid", "sequential", 160));
+  CHECK(holds("heavy_pyramid", "sequential + 4 substeps", 1000));
+}
+
+TEST_CASE(
+    "a dropped stack topples at large time steps without accumulation, and sub-stepping "
+    "holds it",
+    "[stability][time-step][substeps]") {
+  CHECK(holds("large_dt", "sequential − accumulation", 1.0 / 30));
+  CHECK(fails("large_dt", "sequential − accumulation", 1.0 / 20));
+  CHECK(holds("large_dt", "sequential − accumulation + 4 substeps", 1.0 / 15));
+  CHECK(holds("large_dt", "sequential", 1.0 / 15));
+  CHECK(holds("large_dt", "box2d", 1.0 / 15));
+}
+
+TEST_CASE("a fast small ball tunnels through a thin wall once one step jumps past its middle",
+          "[stability][tunnelling][speculative][substeps]") {
+  // One step carries the centre past the wall's mid-plane above v = (gap + r + t/2)/dt = 12 m/s.
+  for (const Method& method : baseMethods()) {
+    INFO(method.label);
+    CHECK(!runStress(findStressScene("tunnelling"), method, 11.0).failed);
+    CHECK(runStress(findStressScene("tunnelling"), method, 13.0).failed);
+  }
+  CHECK(holds("tunnelling", "sequential + speculative contacts", 1000));
+  SECTION("four sub-steps move the breaking point four times further") {
+    CHECK(holds("tunnelling", "sequential + 4 substeps", 44));
+    CHECK(fails("tunnelling", "sequential + 4 substeps", 52));
+  }
+}
+
+TEST_CASE("the search finds the tunnelling speed a student can derive", "[stability][search]") {
+  const BreakingPoint point =
+      findBreakingPoint(findStressScene("tunnelling"), findMethod("sequential"));
+  REQUIRE(point.verdict == Verdict::Breaks);
+  const double derived = (0.05 + 0.1 + 0.05) * 60.0;
+  CHECK(point.lastHeld < derived);
+  CHECK(point.firstFailed > derived);
+  CHECK(point.firstFailed / point.lastHeld < 1.12);  // 6 halvings of 1..1000
+  const BreakingPoint again =
+      findBreakingPoint(findStressScene("tunnelling"), findMethod("sequential"));
+  CHECK(again.firstFailed == point.firstFailed);
+}
+
+TEST_CASE("overlapping boxes are thrown apart by the penetration bias, not by a position pass",
+          "[stability][overlap][bias]") {
+  CHECK(holds("overlap_recovery", "sequential", 0.05));
+  CHECK(fails("overlap_recovery", "sequential", 0.25));
+  CHECK(holds("overlap_recovery", "sequential − bias", 0.5));
+  CHECK(holds("overlap_recovery", "box2d", 0.5));
+  CHECK(holds("overlap_recovery", "micro", 0.25));
+}
+
+TEST_CASE("a bouncy stack gains energy only without micro's bounce fixes",
+          "[stability][restitution][micro]") {
+  // Not monotonic above the breaking point (the hops are chaotic): 0.75 and 1 both fail.
+  CHECK(holds("restitution_stack", "micro − both bounce fixes", 0.6));
+  CHECK(fails("restitution_stack", "micro − both bounce fixes", 0.75));
+  CHECK(fails("restitution_stack", "micro − both bounce fixes", 1.0));
+  CHECK(holds("restitution_stack", "micro − acceleration removal", 1.0));
+  CHECK(holds("restitution_stack", "micro − low-speed restitution", 1.0));
+  CHECK(holds("restitution_stack", "micro", 1.0));
+  CHECK(holds("restitution_stack", "sequential", 1.0));
+}
+
+TEST_CASE("no method passes a cradle's bounce through a row of touching balls",
+          "[stability][restitution][cradle]") {
+  for (const std::string method : {"micro", "sequential", "reference", "box2d"}) {
+    CHECK(holds("newtons_cradle", method, 1));
+    CHECK(fails("newtons_cradle", method, 2));
+  }
+}
+
+TEST_CASE("an arch and a card house stand above their friction breaking points",
+          "[stability][friction]") {
+  CHECK(holds("arch", "sequential", 0.35));
+  CHECK(fails("arch", "sequential", 0.25));
+  CHECK(fails("arch", "micro − friction", 1.0));
+  CHECK(holds("card_house", "sequential", 0.25));
+  CHECK(fails("card_house", "sequential", 0.15));
+}
+
+TEST_CASE("removing a heavy ball pops the others only without warm starting",
+          "[stability][warm-starting]") {
+  CHECK(holds("warm_start_pop", "sequential − warm starting", 10));
+  CHECK(fails("warm_start_pop", "sequential − warm starting", 20));
+  CHECK(holds("warm_start_pop", "sequential", 1000));
+}
+
+TEST_CASE("far from the origin Box2D's floats break a stack our doubles hold",
+          "[stability][precision]") {
+  CHECK(holds("far_from_origin", "box2d", 1000));
+  CHECK(fails("far_from_origin", "box2d", 10000));
+  CHECK(holds("far_from_origin", "sequential", 1e6));
+}
+
+TEST_CASE("a run that blows up reports where and when instead of carrying NaN on",
+          "[stability][non-finite]") {
+  // A bullet at 1e308 m/s: its position overflows to infinity after 1.8e308 / (1e308/60) steps.
+  StressScene overflow = findStressScene("tunnelling");
+  overflow.build = [original = overflow.build](double speed) {
+    Scene scene = original(speed);
+    scene.steps = 200;
+    return scene;
+  };
+  bool sawNonFinite = false;
+  const Outcome outcome =
+      runStress(overflow, findMethod("sequential"), 1e308, [&](const Simulation& simulation) {
+        for (const Body& body : simulation.bodies()) {
+          sawNonFinite |= !body.position.allFinite();
+        }
+      });
+  CHECK(outcome.failed);
+  CHECK(outcome.stopped == "body bullet became non-finite at step 108");
+  CHECK(std::isinf(outcome.measure));
+  CHECK_FALSE(sawNonFinite);
+}
