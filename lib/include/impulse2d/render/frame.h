@@ -20,7 +20,7 @@ enum class BodyState {
   Resting,   ///< in contact and slower than restingSpeed and restingAngularSpeed
   Touching,  ///< in contact and moving, no point sliding: rolling, bouncing or being pushed
   Sliding,   ///< a contact point in dynamic friction or slipping faster than slidingSpeed
-  Sleeping,  ///< put to sleep by the world (reserved: no world sleeps bodies yet)
+  Sleeping,  ///< put to sleep by the world (Body::asleep; docs/sleeping.md)
 };
 
 /// The state of each body, by the thresholds of `settings`.
