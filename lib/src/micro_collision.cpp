@@ -212,16 +212,8 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   context.bodies[manifold.bodyB].applyImpulse(worldImpulse, point.point);
   refreshContactVelocities(context, manifold.bodyA);
   refreshContactVelocities(context, manifold.bodyB);
-  if (context.observer) {
-    const SolverEvent event{SolverEvent::Phase::Velocity,
-                            iteration,
-                            state.manifold,
-                            state.point,
-                            desired.x(),
-                            impulse.x(),
-                            impulse.y()};
-    context.observer->onSolverEvent(event, context.bodies, context.manifolds);
-  }
+  context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point, desired.x(),
+                  impulse.x(), impulse.y()});
 }
 
 void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, int bodyIndex) {
@@ -283,16 +275,8 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
   moveBody(b, armB, manifold.normal, penetration, inertiaAtContact(0, 0));
   refreshPenetrations(context, manifold.bodyA);
   refreshPenetrations(context, manifold.bodyB);
-  if (context.observer) {
-    const SolverEvent event{SolverEvent::Phase::Position,
-                            iteration,
-                            state.manifold,
-                            state.point,
-                            penetration,
-                            0.0,
-                            0.0};
-    context.observer->onSolverEvent(event, context.bodies, context.manifolds);
-  }
+  context.report({SolverEvent::Phase::Position, iteration, state.manifold, state.point, penetration,
+                  0.0, 0.0});
 }
 
 // Moves one body its share of the penetration along direction: linear and angular shares in

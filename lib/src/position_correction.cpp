@@ -33,9 +33,8 @@ double wantedRemoval(const Body& a, const Body& b, const Manifold& manifold, int
 }
 
 void report(const StepContext& context, int sweep, int manifold, int point, double removed) {
-  if (context.observer == nullptr || removed <= 0.0) return;
-  const SolverEvent event{SolverEvent::Phase::Position, sweep, manifold, point, removed, 0.0, 0.0};
-  context.observer->onSolverEvent(event, context.bodies, context.manifolds);
+  if (removed <= 0.0) return;
+  context.report({SolverEvent::Phase::Position, sweep, manifold, point, removed, 0.0, 0.0});
 }
 
 /// One point on its own: the positional impulse removal / K along the normal.

@@ -237,15 +237,9 @@ void ReferenceSolver::applyImpulses(const StepContext& context,
     point.friction =
         frictionStateOf(point.normalImpulse, point.tangentImpulse, row.friction, onLimit);
     applyContactImpulse(context, manifold, row.point, point.normalImpulse, point.tangentImpulse);
-    if (context.observer == nullptr) continue;
-    const SolverEvent event{SolverEvent::Phase::Velocity,
-                            0,
-                            row.manifold,
-                            row.point,
-                            row.targetNormalVelocity - freeVelocity_(2 * i),
-                            point.normalImpulse,
-                            point.tangentImpulse};
-    context.observer->onSolverEvent(event, context.bodies, context.manifolds);
+    context.report({SolverEvent::Phase::Velocity, 0, row.manifold, row.point,
+                    row.targetNormalVelocity - freeVelocity_(2 * i), point.normalImpulse,
+                    point.tangentImpulse});
   }
 }
 

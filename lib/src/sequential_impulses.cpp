@@ -179,15 +179,8 @@ double SequentialImpulseSolver::solveManifold(const StepContext& context,
     PointImpulse& impulse = impulses[static_cast<size_t>(i)];
     impulse.tangentImpulse = solveFriction(context, stateOf(i), impulse.normalImpulse);
     largestChange = std::max(largestChange, std::abs(impulse.normalImpulse));
-    if (context.observer == nullptr) continue;
-    const SolverEvent event{SolverEvent::Phase::Velocity,
-                            sweep,
-                            manifold.manifold,
-                            i,
-                            impulse.desiredChange,
-                            impulse.normalImpulse,
-                            impulse.tangentImpulse};
-    context.observer->onSolverEvent(event, context.bodies, context.manifolds);
+    context.report({SolverEvent::Phase::Velocity, sweep, manifold.manifold, i,
+                    impulse.desiredChange, impulse.normalImpulse, impulse.tangentImpulse});
   }
   return largestChange;
 }

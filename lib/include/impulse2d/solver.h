@@ -44,6 +44,11 @@ struct StepContext {
   std::vector<Manifold>& manifolds;
   double dt;
   SolverObserver* observer = nullptr;  ///< null unless the step is being traced
+
+  /// Tells the observer, if the step is being traced, what the solver just did.
+  void report(const SolverEvent& event) const {
+    if (observer) observer->onSolverEvent(event, bodies, manifolds);
+  }
 };
 
 /// How the last solve went. Iterative methods report their iterations; the reference reports its
