@@ -12,7 +12,7 @@
 
 #include "impulse2d/render/frame.h"
 #include "impulse2d/render/png.h"
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene.h"
 
 using namespace impulse2d;
 using Clock = std::chrono::steady_clock;
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   const std::unique_ptr<World> world = buildWorld(scene);
   for (int i = 0; i < settleSteps; ++i) world->step();
   render::RenderSettings settings;
-  render::FrameRenderer renderer(render::fitCamera(world->bodies(), scene.view, settings),
+  render::FrameRenderer renderer(render::fitCamera(world->bodies(), ViewDef{}, settings),
                                  scene.name, settings);
   std::vector<double> wallTimes;
   std::vector<double> processorTimes;  // immune to other programs sharing the machine

@@ -12,7 +12,7 @@
 #include <functional>
 #include <vector>
 
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene.h"
 
 using namespace impulse2d;
 using Clock = std::chrono::steady_clock;

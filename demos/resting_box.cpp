@@ -4,7 +4,7 @@
 // second keeps making mini-bounces.
 #include <cstdio>
 
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene.h"
 
 using namespace impulse2d;
 

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "impulse2d/scene.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene.h"
+#include "impulse2d/scene/scene_file.h"
 
 namespace {
 

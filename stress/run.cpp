@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "impulse2d/box2d/box2d_simulation.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 #include "impulse2d/world.h"
 
 namespace impulse2d::stress {

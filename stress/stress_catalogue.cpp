@@ -87,7 +87,7 @@ std::string writeFailureSheet(const std::string& root, const StressScene& stress
                               const Method& method, double knob) {
   const Scene scene = sceneFor(stress, method, knob);
   const render::RenderSettings settings;
-  const render::Camera camera = render::fitCamera(buildBodies(scene), scene.view, settings);
+  const render::Camera camera = render::fitCamera(buildBodies(scene), ViewDef{}, settings);
   render::FrameRenderer renderer(camera, stress.name + " (" + method.label + ")", settings);
   const int every = std::max(1, scene.steps / (kFramesPerFailure - 1));
   render::FrameWriter writer(root, stress.name, every, stress.name + "_" + slug(method.label),

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene.h"
 #include "impulse2d/simulation.h"
 
 namespace impulse2d::stress {

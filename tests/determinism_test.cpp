@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "impulse2d/box2d/box2d_simulation.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 namespace fs = std::filesystem;
 using namespace impulse2d;

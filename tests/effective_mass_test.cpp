@@ -2,7 +2,7 @@
 // ("apply a unit impulse to copies of the bodies and measure the relative velocity again").
 #include <catch2/catch.hpp>
 
-#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/solvers/contact_math.h"
 
 using namespace impulse2d;
 

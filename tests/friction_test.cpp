@@ -5,7 +5,8 @@
 
 #include <iostream>
 
-#include "impulse2d/micro_collision.h"
+#include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/micro_collision.h"
 #include "lecture_scenes.h"
 
 using namespace impulse2d;

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "impulse2d/collide.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 using namespace impulse2d;
 

@@ -3,9 +3,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "impulse2d/lcp.h"
+#include "impulse2d/solvers/lcp.h"
 
-using impulse2d::LemkeOptions;
+using impulse2d::LemkeSettings;
 using impulse2d::naturalResidual;
 using impulse2d::solveLemke;
 
@@ -20,7 +20,7 @@ TEST_CASE("a non-negative q needs no impulse: z = 0, w = q", "[lcp][lemke]") {
   Eigen::MatrixXd m(2, 2);
   m << 2.0, 1.0, 1.0, 2.0;
   const Eigen::VectorXd q = Eigen::Vector2d(1.0, 0.0);
-  const auto solution = solveLemke(m, q, LemkeOptions{});
+  const auto solution = solveLemke(m, q, LemkeSettings{});
   REQUIRE(solution.solved);
   CHECK(solution.z.norm() == 0.0);
   CHECK(solution.pivots == 0);
@@ -29,7 +29,7 @@ TEST_CASE("a non-negative q needs no impulse: z = 0, w = q", "[lcp][lemke]") {
 TEST_CASE("one active row: z = (1, 0), w = (0, 2) for M = I, q = (-1, 2)", "[lcp][lemke]") {
   const Eigen::MatrixXd m = Eigen::MatrixXd::Identity(2, 2);
   const Eigen::VectorXd q = Eigen::Vector2d(-1.0, 2.0);
-  const auto solution = solveLemke(m, q, LemkeOptions{});
+  const auto solution = solveLemke(m, q, LemkeSettings{});
   REQUIRE(solution.solved);
   CHECK(solution.z(0) == Approx(1.0).margin(kExact));
   CHECK(solution.z(1) == Approx(0.0).margin(kExact));
@@ -40,7 +40,7 @@ TEST_CASE("both rows active: the linear system 2a + b = 5, a + 2b = 6", "[lcp][l
   Eigen::MatrixXd m(2, 2);
   m << 2.0, 1.0, 1.0, 2.0;
   const Eigen::VectorXd q = Eigen::Vector2d(-5.0, -6.0);
-  const auto solution = solveLemke(m, q, LemkeOptions{});
+  const auto solution = solveLemke(m, q, LemkeSettings{});
   REQUIRE(solution.solved);
   CHECK(solution.z(0) == Approx(4.0 / 3.0).margin(kExact));
   CHECK(solution.z(1) == Approx(7.0 / 3.0).margin(kExact));
@@ -52,7 +52,7 @@ TEST_CASE("Murty's 4×4 example: z = (2, 1, 3, 1), w = 0", "[lcp][lemke]") {
   m << 1, -1, -1, -1, -1, 1, -1, -1, 1, 1, 2, 0, 1, 1, 0, 2;
   Eigen::VectorXd q(4);
   q << 3, 5, -9, -5;
-  const auto solution = solveLemke(m, q, LemkeOptions{});
+  const auto solution = solveLemke(m, q, LemkeSettings{});
   REQUIRE(solution.solved);
   Eigen::VectorXd expected(4);
   expected << 2, 1, 3, 1;
@@ -65,7 +65,7 @@ TEST_CASE("a singular, degenerate problem (two points of one contact) is solved"
   Eigen::MatrixXd m(2, 2);
   m << 1.0, 1.0, 1.0, 1.0;
   const Eigen::VectorXd q = Eigen::Vector2d(-1.0, -1.0);
-  const auto solution = solveLemke(m, q, LemkeOptions{});
+  const auto solution = solveLemke(m, q, LemkeSettings{});
   REQUIRE(solution.solved);
   CHECK(solution.z.sum() == Approx(1.0).margin(kExact));
   CHECK(naturalResidual(m, q, solution.z) < kExact);
@@ -87,7 +87,7 @@ TEST_CASE("random singular positive semi-definite problems with a solution are s
     Eigen::VectorXd w = Eigen::VectorXd::Zero(n);
     for (int i = 0; i < n; ++i) (active(random) ? z(i) : w(i)) = std::abs(normal(random));
     const Eigen::VectorXd q = w - m * z;
-    const auto solution = solveLemke(m, q, LemkeOptions{});
+    const auto solution = solveLemke(m, q, LemkeSettings{});
     INFO("trial " << trial << ": " << solution.failure);
     REQUIRE(solution.solved);
     CHECK(naturalResidual(m, q, solution.z) < 1e-10 * (1.0 + solution.z.cwiseAbs().maxCoeff()));
@@ -97,7 +97,7 @@ TEST_CASE("random singular positive semi-definite problems with a solution are s
 TEST_CASE("an infeasible problem ends on a ray and says so", "[lcp][lemke][failure]") {
   const Eigen::MatrixXd m = -Eigen::MatrixXd::Identity(1, 1);  // w = −z − 1 < 0 for all z ≥ 0
   const Eigen::VectorXd q = Eigen::VectorXd::Constant(1, -1.0);
-  const auto solution = solveLemke(m, q, LemkeOptions{});
+  const auto solution = solveLemke(m, q, LemkeSettings{});
   CHECK_FALSE(solution.solved);
   CHECK_THAT(solution.failure, Catch::Contains("ray"));
 }
@@ -107,7 +107,7 @@ TEST_CASE("the pivot limit is reported, not a half answer", "[lcp][lemke][failur
   m << 1, -1, -1, -1, -1, 1, -1, -1, 1, 1, 2, 0, 1, 1, 0, 2;
   Eigen::VectorXd q(4);
   q << 3, 5, -9, -5;
-  LemkeOptions options;
+  LemkeSettings options;
   options.maxPivots = 2;
   const auto solution = solveLemke(m, q, options);
   CHECK_FALSE(solution.solved);

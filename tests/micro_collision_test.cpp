@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "impulse2d/micro_collision.h"
+#include "impulse2d/solvers/micro_collision.h"
 #include "lecture_scenes.h"
 
 using namespace impulse2d;

@@ -4,8 +4,8 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "impulse2d/reference_solver.h"
-#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/reference_solver.h"
 #include "impulse2d/world.h"
 #include "solver_scenes.h"
 
@@ -100,7 +100,7 @@ TEST_CASE("on a slope the reference gives N = m g cos Î¸, and friction m g sin Î
 TEST_CASE("a solve that cannot finish is reported and thrown, never returned half done",
           "[reference][failure]") {
   Scene scene = stackScene("reference", 5, 0.6);
-  scene.solverSettings.reference.maxPivots = 2;
+  scene.solverSettings.reference.lemke.maxPivots = 2;
   auto world = buildWorld(scene);
   CHECK_THROWS_WITH(world->step(), Catch::Contains("pivot limit"));
   CHECK_FALSE(world->solver().lastReport().converged);

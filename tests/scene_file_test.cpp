@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 using namespace impulse2d;
 
@@ -72,7 +72,7 @@ std::string errorOf(const std::string& text) {
 
 /// The what() of the SceneError that applying `assignment` to a one-ball scene throws.
 std::string errorOfSetting(const std::string& assignment) {
-  Scene scene = parseScene(kOneBall, "ball.toml");
+  SceneFile scene = parseScene(kOneBall, "ball.toml");
   try {
     applySetting(scene, assignment);
   } catch (const SceneError& error) {
@@ -84,7 +84,7 @@ std::string errorOfSetting(const std::string& assignment) {
 }  // namespace
 
 TEST_CASE("the issue's example scene loads with every key", "[scene-file][format]") {
-  const Scene scene = parseScene(kIssueExample, "scenes/example.toml");
+  const SceneFile scene = parseScene(kIssueExample, "scenes/example.toml");
   CHECK(scene.name == "example");
   CHECK(scene.world.gravity == Vec2(0.0, -9.81));
   CHECK(scene.world.dt == 0.0166666667);
@@ -112,8 +112,8 @@ TEST_CASE("the issue's example scene loads with every key", "[scene-file][format
 }
 
 TEST_CASE("omitted keys take the documented defaults", "[scene-file][defaults]") {
-  const Scene scene = parseScene(kOneBall, "ball.toml");
-  const Scene defaults;
+  const SceneFile scene = parseScene(kOneBall, "ball.toml");
+  const SceneFile defaults;
   const WorldSettings world;
   const BodyDef body;
   CHECK(scene.world.gravity == world.gravity);
@@ -137,7 +137,7 @@ TEST_CASE("omitted keys take the documented defaults", "[scene-file][defaults]")
 }
 
 TEST_CASE("angles in files are degrees, in the Scene radians", "[scene-file][units]") {
-  const Scene scene = parseScene(
+  const SceneFile scene = parseScene(
       "[[body]]\nshape = \"box\"\nsize = [2, 1]\nangle_deg = 90\nangular_velocity_deg = -180\n",
       "turned.toml");
   CHECK(scene.bodies[0].angle == Approx(degrees(90.0)));
@@ -146,7 +146,7 @@ TEST_CASE("angles in files are degrees, in the Scene radians", "[scene-file][uni
 
 TEST_CASE("a polygon's position moves from its origin to its centroid", "[scene-file][polygon]") {
   // The triangle's centroid is (0.5, 1/3) in the file's frame; turned 90°, that arm is (-1/3, 0.5).
-  const Scene scene = parseScene(
+  const SceneFile scene = parseScene(
       "[[body]]\nshape = \"polygon\"\nvertices = [[0, 0], [1, 0], [0.5, 1]]\n"
       "position = [3, 0.5]\nangle_deg = 90\n",
       "triangle.toml");
@@ -159,7 +159,7 @@ TEST_CASE("a polygon's position moves from its origin to its centroid", "[scene-
 }
 
 TEST_CASE("[solver] sets the chosen solver's settings, [render] the view", "[scene-file][solver]") {
-  const Scene scene = parseScene(
+  const SceneFile scene = parseScene(
       "[world]\nsolver = \"sequential\"\ncontact_margin = 0.01\n"
       "[solver]\nvelocity_iterations = 20\nwarm_starting = false\nbias_factor = 0.1\n"
       "[render]\nwidth = 640\nheight = 480\ncentre = [1, 2]\nscale = 50\n" +
@@ -168,7 +168,7 @@ TEST_CASE("[solver] sets the chosen solver's settings, [render] the view", "[sce
   CHECK(scene.world.contactMargin == 0.01);
   CHECK(scene.solverSettings.sequential.velocityIterations == 20);
   CHECK_FALSE(scene.solverSettings.sequential.warmStarting);
-  CHECK(scene.solverSettings.sequential.biasFactor == 0.1);
+  CHECK(scene.solverSettings.sequential.targets.biasFactor == 0.1);
   CHECK(scene.view.width == 640);
   CHECK(scene.view.height == 480);
   CHECK(scene.view.centre == Vec2(1.0, 2.0));
@@ -176,7 +176,7 @@ TEST_CASE("[solver] sets the chosen solver's settings, [render] the view", "[sce
 }
 
 TEST_CASE("[[stack]] and [[pyramid]] expand to touching boxes", "[scene-file][generators]") {
-  const Scene scene = parseScene(
+  const SceneFile scene = parseScene(
       "[[stack]]\ncount = 3\nsize = [1, 0.5]\nbase = [10, 0]\nlevel_offset = 0.1\n"
       "friction = 0.9\n"
       "[[pyramid]]\nrows = 10\nsize = [1, 1]\nbase = [0, 0]\ndensity = 2\n",
@@ -192,7 +192,7 @@ TEST_CASE("[[stack]] and [[pyramid]] expand to touching boxes", "[scene-file][ge
 
 TEST_CASE("a --set assignment changes one world or solver setting, written as in a file",
           "[scene-file][set]") {
-  Scene scene = parseScene(kOneBall, "ball.toml");
+  SceneFile scene = parseScene(kOneBall, "ball.toml");
   applySetting(scene, "world.dt=0.001");
   applySetting(scene, "world.gravity=[0, -1.62]");
   applySetting(scene, "world.steps=42");

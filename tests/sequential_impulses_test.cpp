@@ -3,8 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include "impulse2d/collide.h"
-#include "impulse2d/position_correction.h"
-#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/position_correction.h"
+#include "impulse2d/solvers/sequential_impulses.h"
 #include "impulse2d/world.h"
 #include "solver_scenes.h"
 
@@ -88,14 +89,14 @@ TEST_CASE("20-box stack stands with the defaults: the top moves < 1 cm from 1 s 
   // pass act, so the top may sink at most 20 × slop.
   const double sink = scene.bodies.back().position.y() - world->bodies().back().position.y();
   CHECK(sink >= 0.0);
-  CHECK(sink < kBoxes * scene.solverSettings.sequential.allowedPenetration);
+  CHECK(sink < kBoxes * scene.solverSettings.sequential.targets.allowedPenetration);
 }
 
 TEST_CASE("20-box stack without accumulated impulses or warm starting sinks or topples",
           "[sequential][stack][accumulation][warm_starting]") {
   constexpr int kBoxes = 20;
   Scene scene = stackScene("sequential", kBoxes, 0.6);
-  const double slopAllowance = kBoxes * scene.solverSettings.sequential.allowedPenetration;
+  const double slopAllowance = kBoxes * scene.solverSettings.sequential.targets.allowedPenetration;
   CHECK(topBoxTravel(scene, 10.0) < slopAllowance);
   SECTION("without accumulation each impulse is clamped alone and cannot be taken back") {
     scene.solverSettings.sequential.accumulateImpulses = false;
@@ -111,15 +112,15 @@ TEST_CASE("the penetration bias pushes an overlap out to the slop; without it th
           "[sequential][bias]") {
   constexpr double kOverlap = 0.05;
   Scene scene = overlappingBox(kOverlap);
-  scene.solverSettings.sequential.positionIterations = 0;
-  const double slop = scene.solverSettings.sequential.allowedPenetration;
+  scene.solverSettings.sequential.positionPass.iterations = 0;
+  const double slop = scene.solverSettings.sequential.targets.allowedPenetration;
   SECTION("with the bias") {
     auto world = buildWorld(scene);
     runSteps(*world, stepsIn(2.0));
     CHECK(largestPenetration(*world) < slop + 1e-4);
   }
   SECTION("without the bias") {
-    scene.solverSettings.sequential.penetrationBias = false;
+    scene.solverSettings.sequential.targets.penetrationBias = false;
     auto world = buildWorld(scene);
     runSteps(*world, stepsIn(2.0));
     CHECK(largestPenetration(*world) > kOverlap - 1e-3);
@@ -140,9 +141,9 @@ TEST_CASE("the position pass removes penetration geometrically and adds no veloc
   SequentialImpulseSolver(settings).solvePositions(context);
   // Both corners overlap alike, so each sweep removes exactly the factor of the excess.
   const double remaining =
-      settings.allowedPenetration +
-      (kOverlap - settings.allowedPenetration) *
-          std::pow(1.0 - settings.positionCorrectionFactor, settings.positionIterations);
+      settings.targets.allowedPenetration +
+      (kOverlap - settings.targets.allowedPenetration) *
+          std::pow(1.0 - settings.positionPass.correctionFactor, settings.positionPass.iterations);
   for (int i = 0; i < 2; ++i) {
     CHECK(currentPenetration(bodies[0], bodies[1], manifolds[0], i) ==
           Approx(remaining).epsilon(1e-9));
@@ -153,7 +154,7 @@ TEST_CASE("the position pass removes penetration geometrically and adds no veloc
 
 TEST_CASE("restitution comes from the closing speed before the solve, none under the threshold",
           "[sequential][restitution]") {
-  const double threshold = SequentialImpulseSettings{}.restitutionVelocityThreshold;
+  const double threshold = SequentialImpulseSettings{}.targets.restitutionVelocityThreshold;
   SECTION("a fast ball bounces at e × its closing speed") {
     auto world = buildWorld(diskAbove(0.5, -5.0, 0.5));
     runSteps(*world, stepsIn(1.0));

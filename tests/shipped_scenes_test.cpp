@@ -8,7 +8,7 @@
 #include <set>
 #include <string>
 
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 using namespace impulse2d;
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene.h"
 #include "lecture_scenes.h"
 
 namespace solvers {

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "impulse2d/scene.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene.h"
+#include "impulse2d/scene/scene_file.h"
 
 using impulse2d::Scene;
 

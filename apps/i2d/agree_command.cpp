@@ -10,7 +10,7 @@
 namespace i2d {
 
 int agreeCommand(const AgreeOptions& options) {
-  const impulse2d::Scene scene = loadScene(options.scene);
+  const impulse2d::SceneFile scene = loadScene(options.scene);
   const impulse2d::Agreement agreement = impulse2d::measureAgreement(scene, options.solvers);
   std::cout << (options.summaryOnly ? impulse2d::agreementSummary(agreement)
                                     : impulse2d::agreementTable(agreement));

@@ -8,7 +8,7 @@
 
 #include "commands.h"
 #include "failures.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 namespace i2d {
 namespace {
@@ -91,7 +91,7 @@ void printBody(const BodyDef& body) {
 }  // namespace
 
 int checkCommand(const CheckOptions& options) {
-  impulse2d::Scene scene = impulse2d::loadSceneFile(options.scenePath);
+  impulse2d::SceneFile scene = impulse2d::loadSceneFile(options.scenePath);
   std::cout << "scene " << scene.name << " (" << options.scenePath << "): valid\n"
             << "solver " << scene.solver << ", " << scene.steps << " steps of " << scene.world.dt
             << " s = " << scene.steps * scene.world.dt << " s\n";

@@ -10,37 +10,37 @@
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/panels.h"
 #include "impulse2d/render/video.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 #include "scene_setup.h"
 
 namespace i2d {
 namespace {
 
-using impulse2d::Scene;
+using impulse2d::SceneFile;
 using impulse2d::Simulation;
 using namespace impulse2d::render;
 
 /// One panel's run: its scene, its simulation and the renderer that draws it.
 struct PanelRun {
   std::string label;
-  Scene scene;
+  SceneFile scene;
   std::unique_ptr<Simulation> simulation;
   std::unique_ptr<FrameRenderer> renderer;
 };
 
 /// The panel's scene: the file, then --solver or the panel's solver, the common --sets, the
 /// panel's own --sets, then --steps and --dt.
-Scene panelScene(const Scene& file, const SceneOptions& common, const PanelOption& panel) {
+SceneFile panelScene(const SceneFile& file, const SceneOptions& common, const PanelOption& panel) {
   SceneOptions options = common;
   if (panel.solver) options.solver = panel.solver;
   options.settings.insert(options.settings.end(), panel.settings.begin(), panel.settings.end());
-  Scene scene = file;
+  SceneFile scene = file;
   applyOverrides(options, scene);
   return scene;
 }
 
 std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
-  const Scene file = impulse2d::loadSceneFile(options.scene.scenePath);
+  const SceneFile file = impulse2d::loadSceneFile(options.scene.scenePath);
   const Camera camera = sceneCamera(file, settings);  // --set changes no body: one view for all
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {
@@ -94,7 +94,7 @@ int compareCommand(const CompareOptions& options) {
   checkVideoPossible(options.frames);
   const RenderSettings settings = renderSettings(options.frames);
   std::vector<PanelRun> runs = startPanels(options, settings);
-  const Scene& first = runs.front().scene;
+  const SceneFile& first = runs.front().scene;
   FrameWriter writer(*options.frames.directory, first.name, options.every,
                      comparePrefix(first.name), settings);
   std::cout << "scene        " << first.name << " (" << runs.size() << " panels, " << first.steps

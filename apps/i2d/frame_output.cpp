@@ -14,7 +14,7 @@ RenderSettings renderSettings(const FrameOptions& options) {
   return settings;
 }
 
-Camera sceneCamera(const impulse2d::Scene& scene, const RenderSettings& settings) {
+Camera sceneCamera(const impulse2d::SceneFile& scene, const RenderSettings& settings) {
   return fitCamera(impulse2d::buildBodies(scene), scene.view, settings);
 }
 
@@ -38,7 +38,8 @@ std::vector<std::string> describeFrames(const FrameWriter& writer) {
           "sheet        " + writer.sheetPath().string()};
 }
 
-FrameRecorder::FrameRecorder(const FrameOptions& options, const impulse2d::Scene& scene, int every)
+FrameRecorder::FrameRecorder(const FrameOptions& options, const impulse2d::SceneFile& scene,
+                             int every)
     : renderer_(sceneCamera(scene, renderSettings(options)), scene.name, renderSettings(options)),
       writer_(*options.directory, scene.name, every, "", renderSettings(options)),
       video_(options.video) {}

@@ -7,7 +7,7 @@
 
 #include "impulse2d/render/frame.h"
 #include "impulse2d/render/frame_writer.h"
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene_file.h"
 #include "impulse2d/simulation.h"
 #include "options.h"
 
@@ -17,7 +17,7 @@ namespace i2d {
 impulse2d::render::RenderSettings renderSettings(const FrameOptions& options);
 
 /// The camera every frame of the scene shares: fitted to its starting bodies or its [render].
-impulse2d::render::Camera sceneCamera(const impulse2d::Scene& scene,
+impulse2d::render::Camera sceneCamera(const impulse2d::SceneFile& scene,
                                       const impulse2d::render::RenderSettings& settings);
 
 /// Throws RunFailure before a run when --video was asked for and ffmpeg is not on PATH.
@@ -33,7 +33,7 @@ std::vector<std::string> describeFrames(const impulse2d::render::FrameWriter& wr
 class FrameRecorder {
  public:
   /// Creates DIR/<scene>/ and checks it is writable (RenderError naming the path).
-  FrameRecorder(const FrameOptions& options, const impulse2d::Scene& scene, int every);
+  FrameRecorder(const FrameOptions& options, const impulse2d::SceneFile& scene, int every);
 
   /// Draws and writes the frame of the simulation's current step if the run records it.
   void record(const impulse2d::Simulation& simulation, long lastStep);

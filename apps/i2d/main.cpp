@@ -7,7 +7,7 @@
 #include "commands.h"
 #include "failures.h"
 #include "help.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 namespace {
 

@@ -18,7 +18,7 @@ namespace i2d {
 namespace {
 
 using impulse2d::Body;
-using impulse2d::Scene;
+using impulse2d::SceneFile;
 using impulse2d::Simulation;
 
 /// What a run writes as it goes: the CSV and the frames, each when asked for.
@@ -70,7 +70,7 @@ double runSteps(Simulation& simulation, long steps, Recorders& recorders) {
   return std::chrono::duration<double>(stepping).count();
 }
 
-Recorders openRecorders(const RunOptions& options, const Scene& scene) {
+Recorders openRecorders(const RunOptions& options, const SceneFile& scene) {
   checkVideoPossible(options.frames);
   Recorders recorders;
   recorders.every = options.every;
@@ -82,7 +82,7 @@ Recorders openRecorders(const RunOptions& options, const Scene& scene) {
 }
 
 /// --trace-step N: runs to step N and draws each solver event of it, then its sheet.
-int traceCommand(const RunOptions& options, const Scene& scene, Simulation& simulation) {
+int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& simulation) {
   if (simulation.solverName() == impulse2d::kBox2dName) {
     throw RunFailure(
         "solver box2d reports no solver events, so it cannot be traced; trace "
@@ -108,7 +108,7 @@ int traceCommand(const RunOptions& options, const Scene& scene, Simulation& simu
 }  // namespace
 
 int runCommand(const RunOptions& options) {
-  const Scene scene = loadScene(options.scene);
+  const SceneFile scene = loadScene(options.scene);
   std::unique_ptr<Simulation> simulation = impulse2d::makeSimulation(scene);
   if (options.traceStep) return traceCommand(options, scene, *simulation);
   Recorders recorders = openRecorders(options, scene);

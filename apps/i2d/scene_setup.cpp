@@ -2,11 +2,11 @@
 #include "scene_setup.h"
 
 #include "failures.h"
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 namespace i2d {
 
-void applyOverrides(const SceneOptions& options, impulse2d::Scene& scene) {
+void applyOverrides(const SceneOptions& options, impulse2d::SceneFile& scene) {
   if (options.solver) scene.solver = *options.solver;
   for (const std::string& assignment : options.settings) {
     try {
@@ -19,8 +19,8 @@ void applyOverrides(const SceneOptions& options, impulse2d::Scene& scene) {
   if (options.dt) scene.world.dt = *options.dt;
 }
 
-impulse2d::Scene loadScene(const SceneOptions& options) {
-  impulse2d::Scene scene = impulse2d::loadSceneFile(options.scenePath);
+impulse2d::SceneFile loadScene(const SceneOptions& options) {
+  impulse2d::SceneFile scene = impulse2d::loadSceneFile(options.scenePath);
   applyOverrides(options, scene);
   return scene;
 }

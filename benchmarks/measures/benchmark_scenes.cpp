@@ -1,7 +1,7 @@
 // The benchmark scenes and method settings (benchmark_scenes.h).
 #include "benchmark_scenes.h"
 
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 using namespace impulse2d;
 

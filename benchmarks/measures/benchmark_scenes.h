@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene.h"
 
 namespace benchmarks {
 

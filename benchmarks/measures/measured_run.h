@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene.h"
 #include "impulse2d/simulation.h"
 
 namespace benchmarks {

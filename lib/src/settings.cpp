@@ -32,33 +32,34 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
   return {{"velocity_iterations", &s.velocityIterations},
           {"accumulate_impulses", &s.accumulateImpulses},
           {"warm_starting", &s.warmStarting},
-          {"penetration_bias", &s.penetrationBias},
-          {"bias_factor", &s.biasFactor},
-          {"allowed_penetration", &s.allowedPenetration},
-          {"max_bias_velocity", &s.maxBiasVelocity},
-          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
-          {"position_iterations", &s.positionIterations},
-          {"position_correction_factor", &s.positionCorrectionFactor},
-          {"max_position_correction", &s.maxPositionCorrection},
-          {"block_solver", &s.blockSolver},
-          {"block_condition_limit", &s.blockConditionLimit}};
+          {"penetration_bias", &s.targets.penetrationBias},
+          {"bias_factor", &s.targets.biasFactor},
+          {"allowed_penetration", &s.targets.allowedPenetration},
+          {"max_bias_velocity", &s.targets.maxBiasVelocity},
+          {"restitution_velocity_threshold", &s.targets.restitutionVelocityThreshold},
+          {"position_iterations", &s.positionPass.iterations},
+          {"position_correction_factor", &s.positionPass.correctionFactor},
+          {"max_position_correction", &s.positionPass.maxCorrection},
+          {"block_solver", &s.block.enabled},
+          {"block_condition_limit", &s.block.conditionLimit}};
 }
 
 std::vector<SettingField> describe(ReferenceSolverSettings& s) {
   return {{"residual_tolerance", &s.residualTolerance},
-          {"max_pivots", &s.maxPivots},
-          {"pivot_tolerance", &s.pivotTolerance},
-          {"tie_tolerance", &s.tieTolerance},
+          {"max_pivots", &s.lemke.maxPivots},
+          {"pivot_tolerance", &s.lemke.pivotTolerance},
+          {"tie_tolerance", &s.lemke.tieTolerance},
           {"degeneracy_perturbation", &s.degeneracyPerturbation},
-          {"bias_factor", &s.biasFactor},
-          {"allowed_penetration", &s.allowedPenetration},
-          {"max_bias_velocity", &s.maxBiasVelocity},
-          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
-          {"position_iterations", &s.positionIterations},
-          {"position_correction_factor", &s.positionCorrectionFactor},
-          {"max_position_correction", &s.maxPositionCorrection},
-          {"block_position_correction", &s.blockPositionCorrection},
-          {"block_condition_limit", &s.blockConditionLimit}};
+          {"penetration_bias", &s.targets.penetrationBias},
+          {"bias_factor", &s.targets.biasFactor},
+          {"allowed_penetration", &s.targets.allowedPenetration},
+          {"max_bias_velocity", &s.targets.maxBiasVelocity},
+          {"restitution_velocity_threshold", &s.targets.restitutionVelocityThreshold},
+          {"position_iterations", &s.positionPass.iterations},
+          {"position_correction_factor", &s.positionPass.correctionFactor},
+          {"max_position_correction", &s.positionPass.maxCorrection},
+          {"block_position_correction", &s.positionBlock.enabled},
+          {"block_condition_limit", &s.positionBlock.conditionLimit}};
 }
 
 std::vector<SettingField> describe(Box2dSettings& s) {

@@ -3,9 +3,9 @@
 
 #include <stdexcept>
 
-#include "impulse2d/micro_collision.h"
-#include "impulse2d/reference_solver.h"
-#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/solvers/micro_collision.h"
+#include "impulse2d/solvers/reference_solver.h"
+#include "impulse2d/solvers/sequential_impulses.h"
 
 namespace impulse2d {
 

@@ -67,6 +67,43 @@ struct MicroCollisionSettings {
   double singularMatrixTolerance = 1e-12;
 };
 
+/// The separating velocity a contact should reach after the solve (contact_math.h,
+/// targetSeparatingVelocity): penetration bias and the bounce threshold. Shared by the methods
+/// that fix their targets once per step (sequential impulses, the reference).
+struct ContactTargetSettings {
+  /// Target a small separating velocity that grows with penetration (Baumgarte bias).
+  bool penetrationBias = true;
+  /// Fraction of the penetration beyond the slop removed per step by the bias velocity.
+  double biasFactor = 0.2;
+  /// m. The slop: penetration the bias and the position pass leave alone, so resting contacts
+  /// stay touching. Its one home for each solver.
+  double allowedPenetration = 0.005;
+  /// m/s. Cap on the bias velocity, so deep overlaps separate without an explosion.
+  double maxBiasVelocity = 4.0;
+  /// m/s. Below this closing speed a contact does not bounce (Box2D 2.4: 1 m/s).
+  double restitutionVelocityThreshold = 1.0;
+};
+
+/// The position pass (position_correction.h) run after the positions are integrated. It leaves
+/// the slop of the solver's ContactTargetSettings alone.
+struct PositionPassSettings {
+  /// Sweeps of the position pass; 0 turns it off.
+  int iterations = 3;
+  /// Fraction of the remaining penetration beyond the slop removed per sweep.
+  double correctionFactor = 0.2;
+  /// m. Largest correction at one contact in one sweep.
+  double maxCorrection = 0.2;
+};
+
+/// Solving the two points of a flat contact together, exactly (two_point_block.h).
+struct BlockSolveSettings {
+  /// On: both corners at once (Box2D 2.4's block solver). Off: one point at a time, as the text
+  /// does; the corner visited first then always gets more, and a tall stack leans and sways.
+  bool enabled = true;
+  /// A two-point contact is solved as a block only while k₀₀² < this × det K (Box2D's 1000).
+  double conditionLimit = 1000.0;
+};
+
 /// Sequential impulses ("Explaining the rigid body solver", Box2D-Lite).
 struct SequentialImpulseSettings {
   /// Sweeps over all contacts per step. A stack of n boxes starting from rest needs about n
@@ -77,63 +114,43 @@ struct SequentialImpulseSettings {
   bool accumulateImpulses = true;
   /// Begin each step from the last step's totals, matched by feature id (needs accumulation).
   bool warmStarting = true;
-  /// Target a small separating velocity that grows with penetration (Baumgarte bias).
-  bool penetrationBias = true;
-  /// Fraction of the penetration beyond the slop removed per step by the bias velocity.
-  double biasFactor = 0.2;
-  /// m. Penetration the bias leaves alone, so resting contacts stay touching.
-  double allowedPenetration = 0.005;
-  /// m/s. Cap on the bias velocity, so deep overlaps separate without an explosion.
-  double maxBiasVelocity = 4.0;
-  /// m/s. Below this closing speed a contact does not bounce (Box2D 2.4: 1 m/s).
-  double restitutionVelocityThreshold = 1.0;
-  /// Sweeps of the position pass after the positions are integrated; 0 turns it off.
-  int positionIterations = 3;
-  /// Fraction of the remaining penetration beyond the slop the position pass removes per sweep.
-  double positionCorrectionFactor = 0.2;
-  /// m. Largest correction the position pass makes at one contact in one sweep.
-  double maxPositionCorrection = 0.2;
-  /// Solve the two normal impulses (and position corrections) of a two-point contact together,
-  /// exactly (Box2D 2.4's block solver). Off: one point at a time, as the text does; the corner
-  /// visited first then always gets more, and a tall stack leans and sways from it.
-  bool blockSolver = true;
-  /// A two-point contact is solved as a block only while k₀₀² < this × det K (Box2D's 1000).
-  double blockConditionLimit = 1000.0;
+  /// Bias and bounce targets.
+  ContactTargetSettings targets;
+  /// The position pass after integration.
+  PositionPassSettings positionPass;
+  /// The block solve of two-point contacts, for velocities and the position pass (it needs
+  /// accumulated impulses).
+  BlockSolveSettings block;
+};
+
+/// Lemke's complementary pivoting (lcp.h): how it may pivot.
+struct LemkeSettings {
+  /// The method gives up (and says so) after this many pivots.
+  int maxPivots = 100000;
+  /// A column entry must exceed this times the column's largest entry (or 1) to be a pivot:
+  /// smaller entries are round-off of zeros, and pivoting on one wrecks the basis inverse.
+  double pivotTolerance = 1e-9;
+  /// Ratios closer than this (relative) count as a tie, broken lexicographically.
+  double tieTolerance = 1e-12;
 };
 
 /// The global solve of all contact impulses together: the accuracy reference.
 struct ReferenceSolverSettings {
   /// Required residual of the complementarity problem, relative to the largest impulse.
   double residualTolerance = 1e-10;
-  /// Pivot limit of the LCP solver; reaching it is reported, never silently accepted.
-  int maxPivots = 100000;
-  /// Lemke: a column entry must exceed this times the column's largest entry to be a pivot.
-  double pivotTolerance = 1e-9;
-  /// Lemke: ratios this close (relative) are a tie, broken by the lexicographic rule.
-  double tieTolerance = 1e-12;
+  /// Lemke's pivot limit and tolerances; reaching the limit is reported, never silently accepted.
+  LemkeSettings lemke;
   /// A resting pile is massively degenerate (many zero velocities); in floating point the
   /// lexicographic rule can then still end on a ray. Lemke is retried once with q moved by
   /// this much (relative to its largest entry, growing along the rows), the textbook remedy;
   /// the answer is checked against the unperturbed problem, so it cannot pass unnoticed.
   double degeneracyPerturbation = 1e-10;
-  /// Target a separating velocity that grows with penetration, as sequential impulses do.
-  double biasFactor = 0.2;
-  /// m. Penetration the bias leaves alone.
-  double allowedPenetration = 0.005;
-  /// m/s. Cap on the bias velocity.
-  double maxBiasVelocity = 4.0;
-  /// m/s. Below this closing speed a contact does not bounce.
-  double restitutionVelocityThreshold = 1.0;
-  /// Sweeps of the position pass (the one sequential impulses runs); 0 turns it off.
-  int positionIterations = 3;
-  /// Fraction of the remaining penetration beyond the slop the position pass removes per sweep.
-  double positionCorrectionFactor = 0.2;
-  /// m. Largest correction the position pass makes at one contact in one sweep.
-  double maxPositionCorrection = 0.2;
+  /// Bias and bounce targets, the same rules as sequential impulses.
+  ContactTargetSettings targets;
+  /// The same position pass as sequential impulses.
+  PositionPassSettings positionPass;
   /// The position pass corrects a two-point contact's corners together (as sequential impulses).
-  bool blockPositionCorrection = true;
-  /// A two-point contact is corrected as a block only while k₀₀² < this × det K.
-  double blockConditionLimit = 1000.0;
+  BlockSolveSettings positionBlock;
 };
 
 /// Box2D 2.4 running the same scene (the behaviour reference): its iteration counts.

@@ -1,5 +1,5 @@
 // Scene files: reading the file, parsing the TOML, and the --set overrides.
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -75,7 +75,7 @@ std::vector<SettingField> solverSettingFields(SolverSettings& settings, const st
   return {};
 }
 
-Scene loadSceneFile(const std::string& path) {
+SceneFile loadSceneFile(const std::string& path) {
   if (std::filesystem::is_directory(path)) throw SceneError(path, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, "cannot read the file: " + std::string(std::strerror(errno)));
@@ -84,12 +84,12 @@ Scene loadSceneFile(const std::string& path) {
   return parseScene(text.str(), path);
 }
 
-Scene parseScene(std::string_view text, const std::string& sourceName) {
+SceneFile parseScene(std::string_view text, const std::string& sourceName) {
   const toml::table root = parseToml(text, sourceName);
   if (root.empty()) throw SceneError(sourceName, 1, 1, "scene file is empty");
   scene_file::rejectUnknownKeys(root, {"world", "solver", "render", "body", "stack", "pyramid"},
                                 "the scene file");
-  Scene scene;
+  SceneFile scene;
   scene.name = sceneName(sourceName);
   scene_file::readWorld(root, scene);
   scene_file::readSolver(root, scene);

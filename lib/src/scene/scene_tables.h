@@ -4,7 +4,7 @@
 
 #include <toml++/toml.h>
 
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene_file.h"
 
 namespace impulse2d::scene_file {
 
@@ -15,7 +15,7 @@ void readWorld(const toml::table& root, Scene& scene);
 void readSolver(const toml::table& root, Scene& scene);
 
 /// [render]: how frames look at the scene.
-void readRender(const toml::table& root, Scene& scene);
+void readRender(const toml::table& root, SceneFile& scene);
 
 /// [[body]], then [[stack]] and [[pyramid]] expanded to bodies; names must be unique.
 void readBodies(const toml::table& root, Scene& scene);

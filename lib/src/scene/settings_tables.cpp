@@ -1,7 +1,7 @@
 // The [world], [solver] and [render] tables of a scene file.
 #include <algorithm>
 
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 #include "scene_tables.h"
 #include "toml_reading.h"
 
@@ -41,7 +41,7 @@ void readSolver(const toml::table& root, Scene& scene) {
                     "[solver] for solver '" + scene.solver + "'");
 }
 
-void readRender(const toml::table& root, Scene& scene) {
+void readRender(const toml::table& root, SceneFile& scene) {
   const toml::table* render = findTable(root, "render");
   if (!render) return;
   rejectUnknownKeys(*render, {"width", "height", "centre", "scale"}, "[render]");

@@ -7,7 +7,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "impulse2d/scene_file.h"
+#include "impulse2d/scene/scene_file.h"
 
 namespace impulse2d::scene_file {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "impulse2d/body.h"
 #include "impulse2d/render/render_settings.h"
-#include "impulse2d/scene.h"
+#include "impulse2d/render/view.h"
 
 namespace impulse2d::render {
 

@@ -11,12 +11,19 @@
 #include <string_view>
 #include <vector>
 
-#include "impulse2d/scene.h"
+#include "impulse2d/render/view.h"
+#include "impulse2d/scene/scene.h"
 
 namespace impulse2d {
 
 /// A scene that cannot be loaded. what() is exactly "FILE:LINE:COLUMN: message" (lines and
 /// columns from 1), or "FILE: message" when the file itself cannot be read.
+/// A scene as its file states it: the physics and, from its [render] table, how frames look at
+/// it. It is a Scene, so a physics caller can take it as one.
+struct SceneFile : Scene {
+  ViewDef view;
+};
+
 class SceneError : public std::runtime_error {
  public:
   SceneError(const std::string& source, int line, int column, const std::string& message);
@@ -35,10 +42,10 @@ class SceneError : public std::runtime_error {
 };
 
 /// Reads and parses the scene file at `path`; the scene is named after the file's stem.
-Scene loadSceneFile(const std::string& path);
+SceneFile loadSceneFile(const std::string& path);
 
 /// Parses scene text; `sourceName` names it in errors and gives the scene its name (its stem).
-Scene parseScene(std::string_view text, const std::string& sourceName);
+SceneFile parseScene(std::string_view text, const std::string& sourceName);
 
 /// Applies one command-line override "section.key=value" (section world or solver) to the scene,
 /// with the value written as in a scene file; a bare word counts as a string (world.solver=micro).

@@ -1,6 +1,6 @@
 // The global reference: Delassus matrix, the frictional LCP of all points, Lemke, a residual
 // check of the answer, then the impulses.
-#include "impulse2d/reference_solver.h"
+#include "impulse2d/solvers/reference_solver.h"
 
 #include <algorithm>
 #include <array>
@@ -8,8 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "impulse2d/position_correction.h"
-#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/position_correction.h"
 
 namespace impulse2d {
 namespace {
@@ -25,32 +25,6 @@ constexpr int kVariablesPerPoint = 4;
 
 const ContactPoint& pointOf(const StepContext& context, int manifold, int point) {
   return context.manifolds[static_cast<size_t>(manifold)].points[static_cast<size_t>(point)];
-}
-
-/// The 2×2 block of the Delassus matrix: how point j's impulses (columns: normal, tangent) change
-/// point i's relative velocities (rows: normal, tangent), summed over the dynamic bodies the two
-/// points share, with the sign convention's −1 for A and +1 for B on each side.
-Mat2 couplingBlock(const StepContext& context, const Manifold& mi, const Vec2& pi,
-                   const Manifold& mj, const Vec2& pj) {
-  const std::array<Vec2, 2> directionsI{mi.normal, mi.tangent()};
-  const std::array<Vec2, 2> directionsJ{mj.normal, mj.tangent()};
-  const std::array<std::pair<int, double>, 2> bodiesI{{{mi.bodyA, -1.0}, {mi.bodyB, 1.0}}};
-  const std::array<std::pair<int, double>, 2> bodiesJ{{{mj.bodyA, -1.0}, {mj.bodyB, 1.0}}};
-  Mat2 block = Mat2::Zero();
-  for (const auto& [bodyI, signI] : bodiesI) {
-    for (const auto& [bodyJ, signJ] : bodiesJ) {
-      const Body& body = context.bodies[static_cast<size_t>(bodyI)];
-      if (bodyI != bodyJ || body.isStatic()) continue;
-      for (int r = 0; r < 2; ++r) {
-        for (int c = 0; c < 2; ++c) {
-          block(r, c) += signI * signJ *
-                         velocityPerUnitImpulse(body, pj, directionsJ[static_cast<size_t>(c)], pi,
-                                                directionsI[static_cast<size_t>(r)]);
-        }
-      }
-    }
-  }
-  return block;
 }
 
 /// The worst violated condition of one point, in N s (velocities turned into impulses by the
@@ -98,9 +72,6 @@ void ReferenceSolver::solveVelocities(const StepContext& context) {
 // The targets use the closing velocity before the solve, with the same rules (bounce threshold,
 // penetration bias, speculative gaps) as sequential impulses.
 void ReferenceSolver::collectPoints(const StepContext& context) {
-  const TargetVelocityRules rules{true, settings_.biasFactor, settings_.allowedPenetration,
-                                  settings_.maxBiasVelocity,
-                                  settings_.restitutionVelocityThreshold};
   rows_.clear();
   for (size_t m = 0; m < context.manifolds.size(); ++m) {
     const Manifold& manifold = context.manifolds[m];
@@ -109,9 +80,10 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
     for (int i = 0; i < manifold.pointCount; ++i) {
       const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
       const double normalVelocity = relativeVelocity(a, b, point.point, manifold.normal);
-      rows_.push_back(PointRow{static_cast<int>(m), i, manifold.friction,
-                               targetSeparatingVelocity(normalVelocity, point.penetration,
-                                                        manifold.restitution, context.dt, rules)});
+      rows_.push_back(
+          PointRow{static_cast<int>(m), i, manifold.friction,
+                   targetSeparatingVelocity(normalVelocity, point.penetration, manifold.restitution,
+                                            context.dt, settings_.targets)});
     }
   }
 }
@@ -126,7 +98,7 @@ void ReferenceSolver::buildDelassus(const StepContext& context) {
       const PointRow& rowJ = rows_[static_cast<size_t>(j)];
       const Manifold& mj = context.manifolds[static_cast<size_t>(rowJ.manifold)];
       const Mat2 block =
-          couplingBlock(context, mi, pointOf(context, rowI.manifold, rowI.point).point, mj,
+          couplingBlock(context.bodies, mi, pointOf(context, rowI.manifold, rowI.point).point, mj,
                         pointOf(context, rowJ.manifold, rowJ.point).point);
       delassus_.block<2, 2>(2 * i, 2 * j) = block;
       delassus_.block<2, 2>(2 * j, 2 * i) = block.transpose();
@@ -183,7 +155,7 @@ void ReferenceSolver::formulateLcp() {
 // Lemke on the problem as stated; on a ray (degeneracy defeating the floating-point
 // lexicographic rule) once more on a slightly perturbed q.
 LcpSolution ReferenceSolver::solveLcp() const {
-  const LemkeOptions options{settings_.maxPivots, settings_.pivotTolerance, settings_.tieTolerance};
+  const LemkeSettings& options = settings_.lemke;
   const LcpSolution solution = solveLemke(lcpMatrix_, lcpVector_, options);
   if (solution.solved || lcpVector_.size() == 0) return solution;
   const int size = static_cast<int>(lcpVector_.size());
@@ -236,7 +208,8 @@ void ReferenceSolver::applyImpulses(const StepContext& context,
     point.tangentImpulse = impulses(2 * i + 1);
     point.friction =
         frictionStateOf(point.normalImpulse, point.tangentImpulse, row.friction, onLimit);
-    applyContactImpulse(context, manifold, row.point, point.normalImpulse, point.tangentImpulse);
+    applyContactImpulse(context.bodies, manifold, row.point, point.normalImpulse,
+                        point.tangentImpulse);
     context.report({SolverEvent::Phase::Velocity, 0, row.manifold, row.point,
                     row.targetNormalVelocity - freeVelocity_(2 * i), point.normalImpulse,
                     point.tangentImpulse});
@@ -249,10 +222,8 @@ void ReferenceSolver::fail(const std::string& reason) {
 }
 
 void ReferenceSolver::solvePositions(const StepContext& context) {
-  correctPositions(context, PositionCorrection{
-                                settings_.positionIterations, settings_.positionCorrectionFactor,
-                                settings_.allowedPenetration, settings_.maxPositionCorrection,
-                                settings_.blockPositionCorrection, settings_.blockConditionLimit});
+  correctPositions(context, settings_.positionPass, settings_.targets.allowedPenetration,
+                   settings_.positionBlock);
 }
 
 }  // namespace impulse2d

@@ -11,18 +11,9 @@
 
 #include <Eigen/Dense>
 
-namespace impulse2d {
+#include "impulse2d/settings.h"
 
-/// How Lemke's method may pivot.
-struct LemkeOptions {
-  /// The method gives up (and says so) after this many pivots.
-  int maxPivots = 100000;
-  /// A column entry must exceed this times the column's largest entry (or 1) to be a pivot:
-  /// smaller entries are round-off of zeros, and pivoting on one wrecks the basis inverse.
-  double pivotTolerance = 1e-9;
-  /// Ratios closer than this (relative) count as a tie, broken lexicographically.
-  double tieTolerance = 1e-12;
-};
+namespace impulse2d {
 
 /// The answer of an LCP solver. `solved` is false on a secondary ray (no solution found this
 /// way) or at the pivot limit; `failure` then says which, and z must not be used.
@@ -38,7 +29,7 @@ struct LcpSolution {
 /// cannot cycle on degenerate problems such as a resting stack). It solves every LCP whose M is
 /// positive semi-definite or copositive-plus and that has a solution; O(n³) work in all.
 LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
-                       const LemkeOptions& options);
+                       const LemkeSettings& options);
 
 /// The natural residual ‖min(z, M z + q)‖∞: zero exactly at a solution; it measures violated
 /// signs and complementarity together.

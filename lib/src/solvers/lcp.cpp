@@ -5,7 +5,7 @@
 // then z₀..zₙ₋₁, then the artificial z0. Starting from w = q, z0 enters to make every w ≥ 0;
 // from then on the variable that enters is always the complement of the one that just left,
 // until z0 itself leaves: then w and z are complementary and z0 = 0, a solution.
-#include "impulse2d/lcp.h"
+#include "impulse2d/solvers/lcp.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +65,7 @@ std::vector<int> smallestRatios(const std::vector<int>& candidates, const Ratio&
 /// which rules out cycling. The artificial variable wins any tie of the first entry. −1: no
 /// row limits the step (a ray).
 int leavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
-               const LemkeOptions& options, int artificial) {
+               const LemkeSettings& options, int artificial) {
   const double smallestPivot =
       options.pivotTolerance * std::max(1.0, direction.cwiseAbs().maxCoeff());
   std::vector<int> candidates;
@@ -119,7 +119,7 @@ LcpSolution failed(LcpSolution solution, const std::string& reason) {
 }  // namespace
 
 LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
-                       const LemkeOptions& options) {
+                       const LemkeSettings& options) {
   const int n = static_cast<int>(q.size());
   LcpSolution solution;
   if (n == 0 || q.minCoeff() >= 0.0) {

@@ -12,8 +12,8 @@
 
 #include <Eigen/Dense>
 
-#include "impulse2d/lcp.h"
 #include "impulse2d/solver.h"
+#include "impulse2d/solvers/lcp.h"
 
 namespace impulse2d {
 

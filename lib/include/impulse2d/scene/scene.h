@@ -1,8 +1,8 @@
-// A scene: the world's settings, the solver it runs and the bodies in it, as plain data. Scene
-// files (scene_file.h) produce it; World, Box2D and the tests are all built from it.
+// A scene: the world's settings, the solver it runs and the bodies in it, as plain physics data
+// (how frames look at it belongs to the scene file, scene_file.h). Scene files produce it; World,
+// Box2D and the tests are all built from it.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,14 +26,6 @@ struct BodyDef {
   double restitution = 0.0;
 };
 
-/// How frames look at a scene, when the scene says ([render] table); unset fields are fitted.
-struct ViewDef {
-  int width = 800;              ///< pixels
-  int height = 600;             ///< pixels
-  std::optional<Vec2> centre;   ///< m, world point at the image centre
-  std::optional<double> scale;  ///< pixels per metre
-};
-
 struct Scene {
   std::string name = "scene";  ///< file name without extension
   WorldSettings world;
@@ -41,7 +33,6 @@ struct Scene {
   std::string solver = "sequential";
   SolverSettings solverSettings;
   std::vector<BodyDef> bodies;
-  ViewDef view;
 };
 
 /// A world of the scene's bodies running its solver.

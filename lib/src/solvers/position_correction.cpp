@@ -1,11 +1,12 @@
 // The shared position pass: non-linear Gauss–Seidel on penetrations (Box2D 2.4's
 // SolvePositionConstraints), moving positions and angles, never velocities.
-#include "impulse2d/position_correction.h"
+#include "impulse2d/solvers/position_correction.h"
 
 #include <algorithm>
 #include <array>
 
-#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/two_point_block.h"
 
 namespace impulse2d {
 namespace {
@@ -19,17 +20,19 @@ void moveBody(Body& body, const Vec2& push, const Vec2& where) {
   body.updateCache();
 }
 
-/// The manifold's point midway between the two anchors at the bodies' current positions.
-Vec2 currentPoint(const Body& a, const Body& b, const ContactPoint& point) {
-  return 0.5 * (a.toWorld(point.anchorA) + b.toWorld(point.anchorB));
-}
+/// How hard the pass corrects: the solver's settings, gathered once per pass.
+struct Correction {
+  const PositionPassSettings& pass;
+  double allowedPenetration;
+  const BlockSolveSettings& block;
+};
 
 /// What one sweep should remove at a point: a fraction of the penetration beyond the slop,
 /// capped; ≤ 0 when there is nothing to remove.
 double wantedRemoval(const Body& a, const Body& b, const Manifold& manifold, int point,
-                     const PositionCorrection& correction) {
+                     const Correction& correction) {
   const double excess = currentPenetration(a, b, manifold, point) - correction.allowedPenetration;
-  return std::min(correction.correctionFactor * excess, correction.maxCorrection);
+  return std::min(correction.pass.correctionFactor * excess, correction.pass.maxCorrection);
 }
 
 void report(const StepContext& context, int sweep, int manifold, int point, double removed) {
@@ -39,13 +42,13 @@ void report(const StepContext& context, int sweep, int manifold, int point, doub
 
 /// One point on its own: the positional impulse removal / K along the normal.
 void correctPoint(const StepContext& context, int manifoldIndex, int index,
-                  const PositionCorrection& correction, int sweep) {
+                  const Correction& correction, int sweep) {
   const Manifold& manifold = context.manifolds[static_cast<size_t>(manifoldIndex)];
   Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
   Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
   const double removed = wantedRemoval(a, b, manifold, index, correction);
   if (removed <= 0.0) return;
-  const Vec2 where = currentPoint(a, b, manifold.points[static_cast<size_t>(index)]);
+  const Vec2 where = currentContactPoint(a, b, manifold.points[static_cast<size_t>(index)]);
   const Vec2 push = (removed / unitImpulseResponse(a, b, where, manifold.normal)) * manifold.normal;
   moveBody(a, -push, where);
   moveBody(b, push, where);
@@ -55,15 +58,15 @@ void correctPoint(const StepContext& context, int manifoldIndex, int index,
 /// Both corners of a flat contact at once, so neither is favoured: positional impulses x ≥ 0 with
 /// K x ≥ the wanted removals, complementary (the same 2×2 problem as the velocity block solve).
 /// Returns false, doing nothing, when K is too ill-conditioned to solve as a block.
-bool correctTogether(const StepContext& context, int manifoldIndex,
-                     const PositionCorrection& correction, int sweep) {
+bool correctTogether(const StepContext& context, int manifoldIndex, const Correction& correction,
+                     int sweep) {
   const Manifold& manifold = context.manifolds[static_cast<size_t>(manifoldIndex)];
   Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
   Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
-  const std::array<Vec2, 2> where{currentPoint(a, b, manifold.points[0]),
-                                  currentPoint(a, b, manifold.points[1])};
+  const std::array<Vec2, 2> where{currentContactPoint(a, b, manifold.points[0]),
+                                  currentContactPoint(a, b, manifold.points[1])};
   const Mat2 k = normalCouplingMatrix(a, b, manifold.normal, where[0], where[1]);
-  if (!isWellConditioned(k, correction.blockConditionLimit)) return false;
+  if (!isWellConditioned(k, correction.block.conditionLimit)) return false;
   const Vec2 wanted(wantedRemoval(a, b, manifold, 0, correction),
                     wantedRemoval(a, b, manifold, 1, correction));
   const Vec2 pushes = solveTwoPointLcp(k, -wanted);
@@ -78,16 +81,13 @@ bool correctTogether(const StepContext& context, int manifoldIndex,
 
 }  // namespace
 
-double currentPenetration(const Body& a, const Body& b, const Manifold& manifold, int point) {
-  const ContactPoint& contact = manifold.points[static_cast<size_t>(point)];
-  return (a.toWorld(contact.anchorA) - b.toWorld(contact.anchorB)).dot(manifold.normal);
-}
-
-void correctPositions(const StepContext& context, const PositionCorrection& correction) {
-  for (int sweep = 0; sweep < correction.iterations; ++sweep) {
+void correctPositions(const StepContext& context, const PositionPassSettings& pass,
+                      double allowedPenetration, const BlockSolveSettings& block) {
+  const Correction correction{pass, allowedPenetration, block};
+  for (int sweep = 0; sweep < pass.iterations; ++sweep) {
     for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
       const int points = context.manifolds[static_cast<size_t>(m)].pointCount;
-      if (correction.block && points == 2 && correctTogether(context, m, correction, sweep)) {
+      if (block.enabled && points == 2 && correctTogether(context, m, correction, sweep)) {
         continue;
       }
       for (int i = 0; i < points; ++i) correctPoint(context, m, i, correction, sweep);

@@ -1,5 +1,5 @@
 // Scene descriptions -> bodies and worlds; the stack and pyramid generators.
-#include "impulse2d/scene.h"
+#include "impulse2d/scene/scene.h"
 
 namespace impulse2d {
 

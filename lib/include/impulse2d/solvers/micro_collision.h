@@ -6,17 +6,9 @@
 #include <vector>
 
 #include "impulse2d/solver.h"
-#include "impulse2d/worst_first_queue.h"
+#include "impulse2d/solvers/worst_first_queue.h"
 
 namespace impulse2d {
-
-/// The 2×2 contact matrix of one contact point: the velocity change (normal, tangent) at the
-/// point that a unit impulse (normal, tangent) causes, summed over both bodies — the planar form
-/// of the lecture's skew-symmetric construction.
-Mat2 contactMatrix(const Body& a, const Body& b, const Vec2& point, const Vec2& normal);
-
-/// The relative velocity (normal, tangent) of B against A at a world point (contact.h's signs).
-Vec2 contactVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& normal);
 
 class MicroCollisionSolver : public ContactSolver {
  public:
@@ -62,7 +54,6 @@ class MicroCollisionSolver : public ContactSolver {
   void moveBody(Body& body, const Vec2& arm, const Vec2& direction, double penetration,
                 double totalInertia) const;
   void refreshPenetrations(const StepContext& context, int bodyIndex);
-  double currentPenetration(const StepContext& context, const PointState& state) const;
 
   MicroCollisionSettings settings_;
   std::vector<PointState> states_;

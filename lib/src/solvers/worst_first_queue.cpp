@@ -1,5 +1,5 @@
 // The indexed max-heap behind worst-first resolution.
-#include "impulse2d/worst_first_queue.h"
+#include "impulse2d/solvers/worst_first_queue.h"
 
 #include <utility>
 

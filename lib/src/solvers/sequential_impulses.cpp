@@ -1,89 +1,15 @@
 // Sequential impulses: PreStep (masses, targets, warm start), then sweeps that solve one contact
 // at a time — normal impulses, then friction — clamping the accumulated totals.
-#include "impulse2d/sequential_impulses.h"
+#include "impulse2d/solvers/sequential_impulses.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/LU>
-
-#include "impulse2d/position_correction.h"
+#include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/position_correction.h"
+#include "impulse2d/solvers/two_point_block.h"
 
 namespace impulse2d {
-
-double velocityPerUnitImpulse(const Body& body, const Vec2& impulsePoint,
-                              const Vec2& impulseDirection, const Vec2& measurePoint,
-                              const Vec2& measureDirection) {
-  const Vec2 impulseArm = impulsePoint - body.position;
-  const Vec2 measureArm = measurePoint - body.position;
-  return body.inverseMass * impulseDirection.dot(measureDirection) +
-         body.inverseInertia * cross(impulseArm, impulseDirection) *
-             cross(measureArm, measureDirection);
-}
-
-double unitImpulseResponse(const Body& a, const Body& b, const Vec2& point, const Vec2& direction) {
-  return velocityPerUnitImpulse(a, point, direction, point, direction) +
-         velocityPerUnitImpulse(b, point, direction, point, direction);
-}
-
-double relativeVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& direction) {
-  return (b.velocityAt(point) - a.velocityAt(point)).dot(direction);
-}
-
-double targetSeparatingVelocity(double normalVelocityBefore, double penetration, double restitution,
-                                double dt, const TargetVelocityRules& rules) {
-  double target = 0.0;
-  if (penetration < 0.0) {
-    target = penetration / dt;
-  } else if (rules.penetrationBias) {
-    const double excess = std::max(penetration - rules.allowedPenetration, 0.0);
-    target = std::min(rules.biasFactor * excess / dt, rules.maxBiasVelocity);
-  }
-  const bool closesThisStep = normalVelocityBefore * dt < penetration;
-  const bool bounces = restitution > 0.0 && closesThisStep &&
-                       normalVelocityBefore < -rules.restitutionVelocityThreshold;
-  if (bounces) target = std::max(target, -restitution * normalVelocityBefore);
-  return target;
-}
-
-FrictionState frictionStateOf(double normalImpulse, double tangentImpulse, double friction,
-                              double tolerance) {
-  if (normalImpulse <= 0.0) return FrictionState::None;
-  return std::abs(tangentImpulse) >= friction * normalImpulse - tolerance ? FrictionState::Dynamic
-                                                                          : FrictionState::Static;
-}
-
-Mat2 normalCouplingMatrix(const Body& a, const Body& b, const Vec2& normal, const Vec2& point0,
-                          const Vec2& point1) {
-  const double coupling = velocityPerUnitImpulse(a, point0, normal, point1, normal) +
-                          velocityPerUnitImpulse(b, point0, normal, point1, normal);
-  Mat2 k;
-  k << unitImpulseResponse(a, b, point0, normal), coupling, coupling,
-      unitImpulseResponse(a, b, point1, normal);
-  return k;
-}
-
-bool isWellConditioned(const Mat2& k, double conditionLimit) {
-  return k(0, 0) * k(0, 0) < conditionLimit * k.determinant();
-}
-
-Vec2 solveTwoPointLcp(const Mat2& k, const Vec2& q) {
-  const Vec2 both = -(inverseOrZero(k, 0.0) * q);
-  if (both.minCoeff() >= 0.0) return both;
-  const Vec2 firstOnly(-q(0) / k(0, 0), 0.0);
-  if (firstOnly(0) >= 0.0 && k(1, 0) * firstOnly(0) + q(1) >= 0.0) return firstOnly;
-  const Vec2 secondOnly(0.0, -q(1) / k(1, 1));
-  if (secondOnly(1) >= 0.0 && k(0, 1) * secondOnly(1) + q(0) >= 0.0) return secondOnly;
-  return Vec2::Zero();  // the last case, q ≥ 0: neither point needs to push
-}
-
-void applyContactImpulse(const StepContext& context, const Manifold& manifold, int point,
-                         double normalImpulse, double tangentImpulse) {
-  const Vec2 impulse = normalImpulse * manifold.normal + tangentImpulse * manifold.tangent();
-  const Vec2& where = manifold.points[static_cast<size_t>(point)].point;
-  context.bodies[static_cast<size_t>(manifold.bodyA)].applyImpulse(-impulse, where);
-  context.bodies[static_cast<size_t>(manifold.bodyB)].applyImpulse(impulse, where);
-}
 
 void SequentialImpulseSolver::solveVelocities(const StepContext& context) {
   prepare(context);
@@ -102,9 +28,6 @@ void SequentialImpulseSolver::solveVelocities(const StepContext& context) {
 // PreStep: the masses from the unit-impulse response, and the target separating velocity from the
 // closing velocity before any impulse of this step (so warm starting does not hide a bounce).
 void SequentialImpulseSolver::prepare(const StepContext& context) {
-  const TargetVelocityRules rules{settings_.penetrationBias, settings_.biasFactor,
-                                  settings_.allowedPenetration, settings_.maxBiasVelocity,
-                                  settings_.restitutionVelocityThreshold};
   states_.clear();
   manifoldStates_.clear();
   for (size_t m = 0; m < context.manifolds.size(); ++m) {
@@ -121,7 +44,7 @@ void SequentialImpulseSolver::prepare(const StepContext& context) {
       state.tangentMass = 1.0 / unitImpulseResponse(a, b, point.point, manifold.tangent());
       const double normalVelocity = relativeVelocity(a, b, point.point, manifold.normal);
       state.targetNormalVelocity = targetSeparatingVelocity(
-          normalVelocity, point.penetration, manifold.restitution, context.dt, rules);
+          normalVelocity, point.penetration, manifold.restitution, context.dt, settings_.targets);
       states_.push_back(state);
     }
   }
@@ -135,12 +58,12 @@ void SequentialImpulseSolver::addManifoldState(const StepContext& context, int m
   state.manifold = manifold;
   state.firstPoint = firstPoint;
   state.pointCount = contact.pointCount;
-  if (settings_.blockSolver && settings_.accumulateImpulses && contact.pointCount == 2) {
+  if (settings_.block.enabled && settings_.accumulateImpulses && contact.pointCount == 2) {
     state.normalCoupling =
         normalCouplingMatrix(context.bodies[static_cast<size_t>(contact.bodyA)],
                              context.bodies[static_cast<size_t>(contact.bodyB)], contact.normal,
                              contact.points[0].point, contact.points[1].point);
-    state.block = isWellConditioned(state.normalCoupling, settings_.blockConditionLimit);
+    state.block = isWellConditioned(state.normalCoupling, settings_.block.conditionLimit);
   }
   manifoldStates_.push_back(state);
 }
@@ -157,7 +80,8 @@ void SequentialImpulseSolver::warmStart(const StepContext& context) const {
       point.tangentImpulse = 0.0;
       continue;
     }
-    applyContactImpulse(context, manifold, state.point, point.normalImpulse, point.tangentImpulse);
+    applyContactImpulse(context.bodies, manifold, state.point, point.normalImpulse,
+                        point.tangentImpulse);
   }
 }
 
@@ -197,7 +121,7 @@ SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNormal(
   PointImpulse impulse;
   impulse.desiredChange = state.targetNormalVelocity - relativeNormalVelocity;
   impulse.normalImpulse = normalImpulseChange(point, state.normalMass * impulse.desiredChange);
-  applyContactImpulse(context, manifold, state.point, impulse.normalImpulse, 0.0);
+  applyContactImpulse(context.bodies, manifold, state.point, impulse.normalImpulse, 0.0);
   return impulse;
 }
 
@@ -223,7 +147,7 @@ void SequentialImpulseSolver::solveNormalsTogether(const StepContext& context,
   for (int i = 0; i < 2; ++i) {
     impulses[static_cast<size_t>(i)].normalImpulse = newTotals(i) - totals(i);
     manifold.points[static_cast<size_t>(i)].normalImpulse = newTotals(i);
-    applyContactImpulse(context, manifold, i, newTotals(i) - totals(i), 0.0);
+    applyContactImpulse(context.bodies, manifold, i, newTotals(i) - totals(i), 0.0);
   }
 }
 
@@ -238,7 +162,7 @@ double SequentialImpulseSolver::solveFriction(const StepContext& context, const 
       context.bodies[static_cast<size_t>(manifold.bodyB)], point.point, manifold.tangent());
   const double impulse = tangentImpulseChange(point, -state.tangentMass * relativeTangentVelocity,
                                               manifold.friction, normalImpulseThisSweep);
-  applyContactImpulse(context, manifold, state.point, 0.0, impulse);
+  applyContactImpulse(context.bodies, manifold, state.point, 0.0, impulse);
   return impulse;
 }
 
@@ -281,10 +205,8 @@ void SequentialImpulseSolver::updateFrictionStates(const StepContext& context) c
 }
 
 void SequentialImpulseSolver::solvePositions(const StepContext& context) {
-  correctPositions(
-      context, PositionCorrection{settings_.positionIterations, settings_.positionCorrectionFactor,
-                                  settings_.allowedPenetration, settings_.maxPositionCorrection,
-                                  settings_.blockSolver, settings_.blockConditionLimit});
+  correctPositions(context, settings_.positionPass, settings_.targets.allowedPenetration,
+                   settings_.block);
 }
 
 }  // namespace impulse2d

@@ -3,42 +3,24 @@
 // or dynamic friction), and update the contact velocities of every contact sharing a body.
 // Penetration resolution: repeatedly take the deepest contact and move its two bodies apart,
 // split between linear and angular motion in proportion to their inertia at the contact.
-#include "impulse2d/micro_collision.h"
+#include "impulse2d/solvers/micro_collision.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "impulse2d/solvers/contact_math.h"
+
 namespace impulse2d {
 namespace {
 
-/// Velocity change along (normal, tangent) at arm r of one body per unit impulse along them.
-Mat2 bodyContactMatrix(const Body& body, const Vec2& arm, const Vec2& normal) {
-  // In 3D: −[r]× I⁻¹ [r]× in contact coordinates, plus m⁻¹ on the diagonal (the lecture's
-  // skew-symmetric construction). In the plane the torque arm of a direction d is r × d.
-  const double normalArm = cross(arm, normal);
-  const double tangentArm = cross(arm, leftPerpendicular(normal));
-  Mat2 matrix;
-  matrix << normalArm * normalArm, normalArm * tangentArm, tangentArm * normalArm,
-      tangentArm * tangentArm;
-  return body.inverseInertia * matrix + body.inverseMass * Mat2::Identity();
-}
-
-Vec2 currentContactPoint(const Body& a, const Body& b, const ContactPoint& point) {
-  return 0.5 * (a.toWorld(point.anchorA) + b.toWorld(point.anchorB));
+/// The penetration of a manifold's point as the bodies stand now.
+double penetrationNow(const StepContext& context, int manifoldIndex, int point) {
+  const Manifold& manifold = context.manifolds[manifoldIndex];
+  return currentPenetration(context.bodies[manifold.bodyA], context.bodies[manifold.bodyB],
+                            manifold, point);
 }
 
 }  // namespace
-
-Mat2 contactMatrix(const Body& a, const Body& b, const Vec2& point, const Vec2& normal) {
-  return bodyContactMatrix(a, point - a.position, normal) +
-         bodyContactMatrix(b, point - b.position, normal);
-}
-
-Vec2 contactVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& normal) {
-  const Vec2 relative = b.velocityAt(point) - a.velocityAt(point);
-  return Vec2(relative.dot(normal), relative.dot(leftPerpendicular(normal)));
-}
-
 // ---- velocity resolution ----
 
 void MicroCollisionSolver::solveVelocities(const StepContext& context) {
@@ -233,7 +215,7 @@ void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, 
 void MicroCollisionSolver::solvePositions(const StepContext& context) {
   queueKeys_.clear();
   for (PointState& state : states_) {
-    state.penetration = currentPenetration(context, state);
+    state.penetration = penetrationNow(context, state.manifold, state.point);
     queueKeys_.push_back(state.penetration);
   }
   queue_.reset(queueKeys_);
@@ -243,16 +225,6 @@ void MicroCollisionSolver::solvePositions(const StepContext& context) {
     if (worst < 0) break;
     resolvePenetration(context, worst, iteration);
   }
-}
-
-// Penetration along the normal of the anchor points as the bodies stand now.
-double MicroCollisionSolver::currentPenetration(const StepContext& context,
-                                                const PointState& state) const {
-  const Manifold& manifold = context.manifolds[state.manifold];
-  const ContactPoint& point = manifold.points[state.point];
-  const Vec2 surfaceA = context.bodies[manifold.bodyA].toWorld(point.anchorA);
-  const Vec2 surfaceB = context.bodies[manifold.bodyB].toWorld(point.anchorB);
-  return -(surfaceB - surfaceA).dot(manifold.normal);
 }
 
 int MicroCollisionSolver::worstPenetration() const {
@@ -307,7 +279,7 @@ void MicroCollisionSolver::refreshPenetrations(const StepContext& context, int b
   if (context.bodies[bodyIndex].isStatic()) return;
   for (int i = contactsOfBodyStart_[bodyIndex]; i < contactsOfBodyStart_[bodyIndex + 1]; ++i) {
     PointState& state = states_[contactsOfBody_[i]];
-    state.penetration = currentPenetration(context, state);
+    state.penetration = penetrationNow(context, state.manifold, state.point);
     queue_.update(contactsOfBody_[i], state.penetration);
   }
 }

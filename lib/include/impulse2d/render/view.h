@@ -1,0 +1,18 @@
+// How frames look at a scene, as its file's [render] table says: plain data, read by the scene
+// loader and used by the camera. Unset fields are fitted to the bodies.
+#pragma once
+
+#include <optional>
+
+#include "impulse2d/math.h"
+
+namespace impulse2d {
+
+struct ViewDef {
+  int width = 800;              ///< pixels
+  int height = 600;             ///< pixels
+  std::optional<Vec2> centre;   ///< m, world point at the image centre
+  std::optional<double> scale;  ///< pixels per metre
+};
+
+}  // namespace impulse2d

@@ -1,0 +1,95 @@
+// The contact math every solver shares (Solver2D's solve_common): how an impulse at a contact
+// changes velocities, the relative velocity at a point, applying a contact impulse, where a
+// contact point is now and how deep it is, the separating velocity a contact should reach, and
+// the friction state of a point. Each solver file sits on this module; no solver includes
+// another. Signs are those of contact.h.
+#pragma once
+
+#include <vector>
+
+#include "impulse2d/body.h"
+#include "impulse2d/contact.h"
+#include "impulse2d/settings.h"
+
+namespace impulse2d {
+
+// ---- velocity change per unit impulse: the one building block of every effective mass ----
+
+/// The velocity change of `body` along `measureDirection` at `measurePoint` that a unit impulse
+/// along `impulseDirection` at `impulsePoint` causes: d·d'/m + (r×d)(r'×d')/I. The building block
+/// of the unit-impulse probe (one point), the lecture's contact matrix (one point, two
+/// directions) and the reference's Delassus matrix (two points).
+double velocityPerUnitImpulse(const Body& body, const Vec2& impulsePoint,
+                              const Vec2& impulseDirection, const Vec2& measurePoint,
+                              const Vec2& measureDirection);
+
+/// The two-body form: how the relative velocity of point i along direction i (B's material minus
+/// A's) changes per unit impulse along direction j at point j of the same pair (+ on B, − on A).
+double pairVelocityPerUnitImpulse(const Body& a, const Body& b, const Vec2& impulsePoint,
+                                  const Vec2& impulseDirection, const Vec2& measurePoint,
+                                  const Vec2& measureDirection);
+
+/// The text's unit-impulse probe in closed form: how much the relative velocity along `direction`
+/// at `point` changes when an impulse of 1 N s acts there (+direction on B, −direction on A):
+/// 1/m_A + 1/m_B + (r_A×d)²/I_A + (r_B×d)²/I_B. Its inverse is the impulse per unit of velocity
+/// change: the normal (or tangent) mass.
+double unitImpulseResponse(const Body& a, const Body& b, const Vec2& point, const Vec2& direction);
+
+/// The lecture's contact matrix of one point: the velocity change (normal, tangent) that a unit
+/// impulse (normal, tangent) causes, summed over both bodies. Row and column 0 are the normal,
+/// 1 the tangent (ContactAxis). The planar form of the skew-symmetric construction.
+Mat2 contactMatrix(const Body& a, const Body& b, const Vec2& point, const Vec2& normal);
+
+/// The normal coupling matrix K of two points of one manifold: entry (i, j) is the change of
+/// point i's normal velocity per unit normal impulse at point j. Symmetric; its diagonal is the
+/// unit-impulse response of each point.
+Mat2 normalCouplingMatrix(const Body& a, const Body& b, const Vec2& normal, const Vec2& point0,
+                          const Vec2& point1);
+
+/// The 2×2 block of the Delassus matrix between point i of manifold mi and point j of manifold
+/// mj: how j's impulses (columns: normal, tangent) change i's relative velocities (rows: normal,
+/// tangent), summed over the dynamic bodies the two manifolds share, each with the sign
+/// convention's −1 for A and +1 for B. Zero when they share no dynamic body.
+Mat2 couplingBlock(const std::vector<Body>& bodies, const Manifold& mi, const Vec2& pi,
+                   const Manifold& mj, const Vec2& pj);
+
+// ---- velocities and impulses at a contact ----
+
+/// The relative velocity (B's material minus A's) at `point`, along `direction`: vn on the
+/// normal (< 0 closing), vt on the tangent.
+double relativeVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& direction);
+
+/// The relative velocity of B against A at a world point in contact coordinates:
+/// (normal, tangent), i.e. (vn, vt).
+Vec2 contactVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& normal);
+
+/// Applies the impulse (normal, tangent) at a manifold's point: +P to B, −P to A.
+void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, int point,
+                         double normalImpulse, double tangentImpulse);
+
+// ---- where a contact is now ----
+
+/// The manifold's point midway between the two surface anchors at the bodies' current poses.
+Vec2 currentContactPoint(const Body& a, const Body& b, const ContactPoint& point);
+
+/// The penetration of a manifold's point at the bodies' current poses: the anchor on A minus the
+/// anchor on B, along the normal (> 0 overlap).
+double currentPenetration(const Body& a, const Body& b, const Manifold& manifold, int point);
+
+// ---- targets and friction ----
+
+/// The target separating velocity of one point, from its closing velocity before the solve:
+/// - touching (penetration ≥ 0): the penetration bias min(β·(d − slop)/dt, cap), or 0;
+/// - a gap (penetration < 0, speculative): −gap/dt, the approach that just closes it;
+/// - a bounce −e·vn, when the closing speed exceeds the threshold and the gap closes within the
+///   step, replaces either if larger. The bias never enters the bounce: a deep contact does not
+///   bounce harder, and a bounce is not scaled by the penetration.
+double targetSeparatingVelocity(double normalVelocityBefore, double penetration, double restitution,
+                                double dt, const ContactTargetSettings& rules);
+
+/// Static inside Coulomb's limit |λt| < μλn, Dynamic on it (within `tolerance`, N s), None when
+/// the point carries no normal impulse.
+FrictionState frictionStateOf(double normalImpulse, double tangentImpulse, double friction,
+                              double tolerance);
+
+}  // namespace impulse2d

@@ -1,0 +1,108 @@
+// The architecture, checked: the physics core (the sources of the `impulse2d` target in
+// lib/CMakeLists.txt, and every project header they reach) never includes rendering, scene files
+// or Box2D, and no solver file includes another solver; solvers share contact_math.h and the
+// other shared modules instead (Solver2D's shape).
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kLib = fs::path(IMPULSE2D_SOURCE_DIR) / "lib";
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// The sources listed in add_library(impulse2d ...) of lib/CMakeLists.txt.
+std::vector<fs::path> coreSources() {
+  const std::string cmake = readText(kLib / "CMakeLists.txt");
+  const std::smatch found = [&] {
+    std::smatch match;
+    std::regex_search(cmake, match, std::regex(R"(add_library\(impulse2d\s([^)]*)\))"));
+    return match;
+  }();
+  std::vector<fs::path> sources;
+  std::istringstream words(found[1].str());
+  for (std::string word; words >> word;) sources.push_back(kLib / word);
+  return sources;
+}
+
+/// Every #include "..." or <...> of a file.
+std::vector<std::string> includesOf(const fs::path& file) {
+  const std::string text = readText(file);
+  const std::regex include(R"(#include\s*[<"]([^>"]+)[>"])");
+  std::vector<std::string> names;
+  for (std::sregex_iterator it(text.begin(), text.end(), include), end; it != end; ++it) {
+    names.push_back((*it)[1].str());
+  }
+  return names;
+}
+
+/// The core's files and every include they reach through project headers.
+std::set<std::string> coreIncludesReached(std::set<fs::path>& visited) {
+  std::vector<fs::path> pending = coreSources();
+  std::set<std::string> reached;
+  while (!pending.empty()) {
+    const fs::path file = pending.back();
+    pending.pop_back();
+    if (!visited.insert(file).second) continue;
+    for (const std::string& name : includesOf(file)) {
+      reached.insert(name);
+      const fs::path header = kLib / "include" / name;
+      if (name.rfind("impulse2d/", 0) == 0 && fs::exists(header)) pending.push_back(header);
+    }
+  }
+  return reached;
+}
+
+bool startsWith(const std::string& text, const std::string& prefix) {
+  return text.rfind(prefix, 0) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("the core lists its sources and they exist", "[layout]") {
+  const std::vector<fs::path> sources = coreSources();
+  REQUIRE(sources.size() >= 10);
+  for (const fs::path& source : sources) CHECK(fs::exists(source));
+}
+
+TEST_CASE("the core never includes rendering, scene files or Box2D", "[layout]") {
+  std::set<fs::path> visited;
+  const std::set<std::string> reached = coreIncludesReached(visited);
+  REQUIRE(reached.count("impulse2d/solvers/contact_math.h") == 1);  // the walk does reach deep
+  for (const std::string& name : reached) {
+    INFO(name);
+    CHECK_FALSE(startsWith(name, "impulse2d/render/"));
+    CHECK_FALSE(startsWith(name, "impulse2d/box2d/"));
+    CHECK_FALSE(startsWith(name, "box2d/"));
+    CHECK_FALSE(startsWith(name, "toml++/"));
+    CHECK_FALSE(startsWith(name, "stb"));
+    CHECK(name != "impulse2d/scene/scene_file.h");
+  }
+}
+
+TEST_CASE("no solver file includes another solver", "[layout]") {
+  const std::set<std::string> solvers = {"micro_collision", "sequential_impulses",
+                                         "reference_solver", "soft_step"};
+  for (const auto& entry : fs::directory_iterator(kLib / "src" / "solvers")) {
+    const std::string own = entry.path().stem().string();
+    for (const std::string& name : includesOf(entry.path())) {
+      const std::string included = fs::path(name).stem().string();
+      INFO(entry.path().filename().string() << " includes " << name);
+      if (included != own) CHECK(solvers.count(included) == 0);
+    }
+  }
+}
