@@ -1,10 +1,7 @@
 // Sequential impulses: accumulated impulses, warm starting, the penetration bias, restitution,
-// speculative gaps, the position pass and the trace — each shown by the failure without it.
+// speculative gaps and the trace — each shown by the failure without it.
 #include <catch2/catch.hpp>
 
-#include "impulse2d/collide.h"
-#include "impulse2d/solvers/contact_math.h"
-#include "impulse2d/solvers/position_correction.h"
 #include "impulse2d/solvers/sequential_impulses.h"
 #include "impulse2d/world.h"
 #include "solver_scenes.h"
@@ -125,31 +122,6 @@ TEST_CASE("the penetration bias pushes an overlap out to the slop; without it th
     runSteps(*world, stepsIn(2.0));
     CHECK(largestPenetration(*world) > kOverlap - 1e-3);
   }
-}
-
-TEST_CASE("the position pass removes penetration geometrically and adds no velocity",
-          "[sequential][position]") {
-  constexpr double kOverlap = 0.05;
-  const Scene scene = overlappingBox(kOverlap);
-  const SequentialImpulseSettings& settings = scene.solverSettings.sequential;
-  std::vector<Body> bodies = buildBodies(scene);
-  std::vector<Manifold> manifolds(1);
-  manifolds[0].bodyA = 0;
-  manifolds[0].bodyB = 1;
-  REQUIRE(collide(bodies[0], bodies[1], scene.world.contactMargin, manifolds[0]) == 2);
-  const StepContext context{bodies, manifolds, scene.world.dt};
-  SequentialImpulseSolver(settings).solvePositions(context);
-  // Both corners overlap alike, so each sweep removes exactly the factor of the excess.
-  const double remaining =
-      settings.targets.allowedPenetration +
-      (kOverlap - settings.targets.allowedPenetration) *
-          std::pow(1.0 - settings.positionPass.correctionFactor, settings.positionPass.iterations);
-  for (int i = 0; i < 2; ++i) {
-    CHECK(currentPenetration(bodies[0], bodies[1], manifolds[0], i) ==
-          Approx(remaining).epsilon(1e-9));
-  }
-  CHECK(bodies[1].velocity.norm() == 0.0);
-  CHECK(bodies[1].angularVelocity == 0.0);
 }
 
 TEST_CASE("restitution comes from the closing speed before the solve, none under the threshold",

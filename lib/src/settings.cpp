@@ -28,38 +28,48 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"singular_matrix_tolerance", &s.singularMatrixTolerance}};
 }
 
+namespace {
+
+/// The shared nested structs keep the flat scene-file names they always had.
+void addFields(std::vector<SettingField>& fields, ContactTargetSettings& s) {
+  fields.insert(fields.end(),
+                {{"penetration_bias", &s.penetrationBias},
+                 {"bias_factor", &s.biasFactor},
+                 {"allowed_penetration", &s.allowedPenetration},
+                 {"max_bias_velocity", &s.maxBiasVelocity},
+                 {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}});
+}
+
+void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
+  fields.insert(fields.end(), {{"position_iterations", &s.iterations},
+                               {"position_correction_factor", &s.correctionFactor},
+                               {"max_position_correction", &s.maxCorrection}});
+}
+
+}  // namespace
+
 std::vector<SettingField> describe(SequentialImpulseSettings& s) {
-  return {{"velocity_iterations", &s.velocityIterations},
-          {"accumulate_impulses", &s.accumulateImpulses},
-          {"warm_starting", &s.warmStarting},
-          {"penetration_bias", &s.targets.penetrationBias},
-          {"bias_factor", &s.targets.biasFactor},
-          {"allowed_penetration", &s.targets.allowedPenetration},
-          {"max_bias_velocity", &s.targets.maxBiasVelocity},
-          {"restitution_velocity_threshold", &s.targets.restitutionVelocityThreshold},
-          {"position_iterations", &s.positionPass.iterations},
-          {"position_correction_factor", &s.positionPass.correctionFactor},
-          {"max_position_correction", &s.positionPass.maxCorrection},
-          {"block_solver", &s.block.enabled},
-          {"block_condition_limit", &s.block.conditionLimit}};
+  std::vector<SettingField> fields = {{"velocity_iterations", &s.velocityIterations},
+                                      {"accumulate_impulses", &s.accumulateImpulses},
+                                      {"warm_starting", &s.warmStarting}};
+  addFields(fields, s.targets);
+  addFields(fields, s.positionPass);
+  fields.insert(fields.end(), {{"block_solver", &s.block.enabled},
+                               {"block_condition_limit", &s.block.conditionLimit}});
+  return fields;
 }
 
 std::vector<SettingField> describe(ReferenceSolverSettings& s) {
-  return {{"residual_tolerance", &s.residualTolerance},
-          {"max_pivots", &s.lemke.maxPivots},
-          {"pivot_tolerance", &s.lemke.pivotTolerance},
-          {"tie_tolerance", &s.lemke.tieTolerance},
-          {"degeneracy_perturbation", &s.degeneracyPerturbation},
-          {"penetration_bias", &s.targets.penetrationBias},
-          {"bias_factor", &s.targets.biasFactor},
-          {"allowed_penetration", &s.targets.allowedPenetration},
-          {"max_bias_velocity", &s.targets.maxBiasVelocity},
-          {"restitution_velocity_threshold", &s.targets.restitutionVelocityThreshold},
-          {"position_iterations", &s.positionPass.iterations},
-          {"position_correction_factor", &s.positionPass.correctionFactor},
-          {"max_position_correction", &s.positionPass.maxCorrection},
-          {"block_position_correction", &s.positionBlock.enabled},
-          {"block_condition_limit", &s.positionBlock.conditionLimit}};
+  std::vector<SettingField> fields = {{"residual_tolerance", &s.residualTolerance},
+                                      {"max_pivots", &s.lemke.maxPivots},
+                                      {"pivot_tolerance", &s.lemke.pivotTolerance},
+                                      {"tie_tolerance", &s.lemke.tieTolerance},
+                                      {"degeneracy_perturbation", &s.degeneracyPerturbation}};
+  addFields(fields, s.targets);
+  addFields(fields, s.positionPass);
+  fields.insert(fields.end(), {{"block_position_correction", &s.positionBlock.enabled},
+                               {"block_condition_limit", &s.positionBlock.conditionLimit}});
+  return fields;
 }
 
 std::vector<SettingField> describe(Box2dSettings& s) {
