@@ -25,7 +25,8 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"velocity_iterations_per_contact", &s.velocityIterationsPerContact},
           {"position_iterations_per_contact", &s.positionIterationsPerContact},
           {"angular_move_limit", &s.angularMoveLimit},
-          {"singular_matrix_tolerance", &s.singularMatrixTolerance}};
+          {"singular_matrix_tolerance", &s.singularMatrixTolerance},
+          {"warm_start", &s.warmStart}};
 }
 
 namespace {

@@ -65,6 +65,10 @@ struct MicroCollisionSettings {
   double angularMoveLimit = 0.2;
   /// Below this |determinant| the contact matrix counts as singular (frictionless fallback).
   double singularMatrixTolerance = 1e-12;
+  /// Warm starting (ours, beyond the lecture): each point starts the step from the totals it
+  /// ended the last step with, matched by feature id, so resting weight does not have to pass
+  /// down a stack one impulse at a time every step. Off: every step starts from zero totals.
+  bool warmStart = true;
 };
 
 /// The separating velocity a contact should reach after the solve (contact_math.h,
