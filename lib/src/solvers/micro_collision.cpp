@@ -13,6 +13,17 @@
 namespace impulse2d {
 namespace {
 
+/// Rows and columns of the contact matrix (contact_math.h, contactMatrix).
+enum ContactAxis : int { Normal = 0, Tangent = 1 };
+
+/// The parts of a (normal, tangent) pair: velocities, velocity changes and impulses at a contact.
+double normalPart(const Vec2& pair) {
+  return pair.x();
+}
+double tangentPart(const Vec2& pair) {
+  return pair.y();
+}
+
 /// The penetration of a manifold's point as the bodies stand now.
 double penetrationNow(const StepContext& context, int manifoldIndex, int point) {
   const Manifold& manifold = context.manifolds[manifoldIndex];
@@ -75,13 +86,13 @@ MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepCo
   state.penetration = point.penetration;
   state.accelerationVelocity = accelerationVelocity(context, manifold);
   state.totalImpulse = warmStartTotals(manifold, point);
-  point.normalImpulse = state.totalImpulse.x();
-  point.tangentImpulse = state.totalImpulse.y();
+  point.normalImpulse = normalPart(state.totalImpulse);
+  point.tangentImpulse = tangentPart(state.totalImpulse);
   point.friction = FrictionState::None;
   point.bounced = false;
-  if (state.totalImpulse.x() > 0.0) {
-    applyContactImpulse(context.bodies, manifold, pointIndex, state.totalImpulse.x(),
-                        state.totalImpulse.y());
+  if (normalPart(state.totalImpulse) > 0.0) {
+    applyContactImpulse(context.bodies, manifold, pointIndex, normalPart(state.totalImpulse),
+                        tangentPart(state.totalImpulse));
   }
   return state;
 }
@@ -140,33 +151,35 @@ double MicroCollisionSolver::accelerationVelocity(const StepContext& context,
 // The separating velocity a point wants. Until it has bounced, the bounce −c·(vs − vacc) on its
 // closing velocity *now*: as in Millington's resolver, an impulse at a neighbour that changes vs
 // changes the bounce, so a collision passes along a row of touching bodies. Without a bounce
-// (or once it has had it), a contact with a gap may close it within the step, and no more.
+// (or once it has had it), a contact with a speculative gap may close it within the step, and no
+// more; a touching one should stop closing.
 double MicroCollisionSolver::targetNormalVelocity(const PointState& state,
                                                   const Manifold& manifold) const {
-  const double separatingVelocity = state.contactVelocity.x();
+  const double separatingVelocity = normalPart(state.contactVelocity);
   if (!state.bounced) {
     const double restitution = appliedRestitution(manifold, -separatingVelocity);
     const double bounce = -restitution * (separatingVelocity - state.accelerationVelocity);
     if (bounce > 0.0) return bounce;
   }
-  return std::min(0.0, state.penetration / dt_);
+  return settings_.speculativeGaps ? std::min(0.0, state.penetration / dt_) : 0.0;
 }
 
-// The velocity change a contact point wants: along the normal, the target minus the separating
-// velocity while the contact penetrates or its gap would close within the step (a speculative
-// contact, found one step early rather than one step deep); along the tangent, all the slip. A
-// point that has bounced is afterwards only kept from closing, so a later impulse at a
-// neighbour does not bounce it again, nor take its bounce back.
+// The velocity change a contact point wants. Along the normal, the lecture's
+// Δv = −vs − c·(vs − vacc), i.e. the target minus the separating velocity, while the contact
+// touches, or (speculative gaps) its gap would close within the step, or (impulse totals) this
+// update already pushes it. Along the tangent, all the slip. A point that has bounced is
+// afterwards only kept from closing, so a later impulse at a neighbour does not bounce it again,
+// nor take its bounce back.
 Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state,
                                                  const Manifold& manifold) const {
-  const double separatingVelocity = state.contactVelocity.x();
-  const bool closesThisStep = separatingVelocity * dt_ < state.penetration;
-  const bool pressed = state.totalImpulse.x() > 0.0;
-  double normalChange = state.penetration >= 0.0 || closesThisStep || pressed
+  const double separatingVelocity = normalPart(state.contactVelocity);
+  const bool gapCloses = settings_.speculativeGaps && separatingVelocity * dt_ < state.penetration;
+  const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
+  double normalChange = state.penetration >= 0.0 || gapCloses || pressed
                             ? targetNormalVelocity(state, manifold) - separatingVelocity
                             : 0.0;
   if (state.bounced) normalChange = std::max(0.0, normalChange);
-  return Vec2(normalChange, -state.contactVelocity.y());
+  return Vec2(normalChange, -tangentPart(state.contactVelocity));
 }
 
 // How badly a point needs resolving. A point not yet pushed in this update counts only its
@@ -175,9 +188,12 @@ Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state,
 // the impulses of one update converge to resting contact instead of leaving a box rocking.
 double MicroCollisionSolver::severity(const StepContext& context, const PointState& state) const {
   const Vec2 desired = desiredVelocityChange(state, context.manifolds[state.manifold]);
-  if (state.totalImpulse.x() <= 0.0) return desired.x();
-  const double slip = state.friction == FrictionState::Static ? std::abs(desired.y()) : 0.0;
-  return std::max(std::abs(desired.x()), slip);
+  if (!settings_.severityCountsPushedPoints || normalPart(state.totalImpulse) <= 0.0) {
+    return normalPart(desired);
+  }
+  const double slip =
+      state.friction == FrictionState::Static ? std::abs(tangentPart(desired)) : 0.0;
+  return std::max(std::abs(normalPart(desired)), slip);
 }
 
 int MicroCollisionSolver::worstVelocityPoint() const {
@@ -185,39 +201,45 @@ int MicroCollisionSolver::worstVelocityPoint() const {
   return queue_.worst();
 }
 
-// The total impulse (normal, tangent) at a point after this micro-collision: the inverse contact
-// matrix turns the desired velocity change into an impulse. Beyond the limit of static friction,
-// dynamic friction: the tangent total is exactly μ times the normal total, in the direction of
-// the trial tangent total (the impulse static friction would need), and the normal part is
-// recomputed so the normal target still holds. Taking the direction from the slip left after
-// earlier impulses instead turns friction the wrong way on a slope at rest, step after step. The
-// totals of one update can push but never pull. For the first impulse at a point (totals zero) this
-// is the lecture's rule.
-Vec2 MicroCollisionSolver::newTotalImpulse(const PointState& state, double friction,
-                                           const Vec2& desiredChange,
+// The total impulse (normal, tangent) at a point after this micro-collision, from the totals
+// `before` it: the inverse contact matrix turns the desired velocity change into an impulse.
+// Beyond the limit of static friction, dynamic friction: the tangent total is exactly μ times
+// the normal total, in the direction of the trial tangent total (the impulse static friction
+// would need), and the normal part is recomputed so the normal target still holds. Taking the
+// direction from the slip left after earlier impulses instead turns friction the wrong way on a
+// slope at rest, step after step. The totals can push but never pull. From zero totals this is
+// the lecture's rule.
+Vec2 MicroCollisionSolver::newTotalImpulse(const PointState& state, const Vec2& before,
+                                           double friction, const Vec2& desiredChange,
                                            FrictionState& frictionState) const {
   const Mat2& matrix = state.contactMatrix;
-  const Vec2& total = state.totalImpulse;
-  const double frictionlessNormal = std::max(0.0, total.x() + desiredChange.x() / matrix(0, 0));
+  const double frictionlessNormal =
+      std::max(0.0, normalPart(before) + normalPart(desiredChange) /
+                                             matrix(ContactAxis::Normal, ContactAxis::Normal));
   frictionState = FrictionState::None;
   if (!settings_.friction || friction <= 0.0) return Vec2(frictionlessNormal, 0.0);
 
-  const Vec2 proposed = total + state.inverseContactMatrix * desiredChange;
-  if (proposed.x() > 0.0 && std::abs(proposed.y()) <= friction * proposed.x()) {
+  const Vec2 trial = before + state.inverseContactMatrix * desiredChange;
+  if (normalPart(trial) > 0.0 && std::abs(tangentPart(trial)) <= friction * normalPart(trial)) {
     frictionState = FrictionState::Static;
-    return proposed;
+    return trial;
   }
-  const double againstSlip = std::copysign(1.0, proposed.y());
-  const double coupling = matrix(0, 0) + matrix(0, 1) * againstSlip * friction;
+  const double direction = std::copysign(1.0, tangentPart(trial));
+  const double coupling = matrix(ContactAxis::Normal, ContactAxis::Normal) +
+                          matrix(ContactAxis::Normal, ContactAxis::Tangent) * direction * friction;
   if (coupling <= settings_.singularMatrixTolerance) return Vec2(frictionlessNormal, 0.0);
   const double normalChange =
-      (desiredChange.x() - matrix(0, 1) * (againstSlip * friction * total.x() - total.y())) /
+      (normalPart(desiredChange) -
+       matrix(ContactAxis::Normal, ContactAxis::Tangent) *
+           (direction * friction * normalPart(before) - tangentPart(before))) /
       coupling;
-  const double normal = std::max(0.0, total.x() + normalChange);
+  const double normal = std::max(0.0, normalPart(before) + normalChange);
   frictionState = FrictionState::Dynamic;
-  return Vec2(normal, againstSlip * friction * normal);
+  return Vec2(normal, direction * friction * normal);
 }
 
+// One micro-collision: the impulse that takes the point from its totals to the new ones. Without
+// impulse totals each impulse is computed alone, from zero, as the lecture does.
 void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int index,
                                                int iteration) {
   PointState& state = states_[index];
@@ -225,19 +247,21 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   ContactPoint& point = manifold.points[state.point];
   const Vec2 desired = desiredVelocityChange(state, manifold);
   const bool bounces = !state.bounced && targetNormalVelocity(state, manifold) > 0.0;
-  const Vec2 total = newTotalImpulse(state, manifold.friction, desired, state.friction);
+  const Vec2 before = settings_.impulseTotals ? state.totalImpulse : Vec2::Zero();
+  const Vec2 impulse =
+      newTotalImpulse(state, before, manifold.friction, desired, state.friction) - before;
+  state.totalImpulse += impulse;
   state.bounced = state.bounced || bounces;
   point.bounced = state.bounced;
-  const Vec2 impulse = total - state.totalImpulse;
-  state.totalImpulse = total;
-  point.normalImpulse = total.x();
-  point.tangentImpulse = total.y();
+  point.normalImpulse = normalPart(state.totalImpulse);
+  point.tangentImpulse = tangentPart(state.totalImpulse);
   point.friction = state.friction;
-  applyContactImpulse(context.bodies, manifold, state.point, impulse.x(), impulse.y());
+  applyContactImpulse(context.bodies, manifold, state.point, normalPart(impulse),
+                      tangentPart(impulse));
   refreshContactVelocities(context, manifold.bodyA);
   refreshContactVelocities(context, manifold.bodyB);
-  context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point, desired.x(),
-                  impulse.x(), impulse.y()});
+  context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point,
+                  normalPart(desired), normalPart(impulse), tangentPart(impulse)});
 }
 
 void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, int bodyIndex) {

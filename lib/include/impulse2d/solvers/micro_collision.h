@@ -46,8 +46,8 @@ class MicroCollisionSolver : public ContactSolver {
   Vec2 desiredVelocityChange(const PointState& state, const Manifold& manifold) const;
   double severity(const StepContext& context, const PointState& state) const;
   int worstVelocityPoint() const;
-  Vec2 newTotalImpulse(const PointState& state, double friction, const Vec2& desiredChange,
-                       FrictionState& frictionState) const;
+  Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
+                       const Vec2& desiredChange, FrictionState& frictionState) const;
   void applyVelocityChange(const StepContext& context, int index, int iteration);
   void refreshContactVelocities(const StepContext& context, int bodyIndex);
 
