@@ -175,6 +175,24 @@ TEST_CASE("[solver] sets the chosen solver's settings, [render] the view", "[sce
   CHECK(scene.view.scale == 50.0);
 }
 
+TEST_CASE("[solver] preset = \"lecture\" turns off every refinement of the micro resolver",
+          "[scene-file][solver][preset]") {
+  const SceneFile scene = parseScene(std::string("[world]\nsolver = \"micro\"\n[solver]\n"
+                                                 "preset = \"lecture\"\nwarm_start = true\n") +
+                                         kOneBall,
+                                     "lecture.toml");
+  const MicroCollisionSettings& micro = scene.solverSettings.micro;
+  CHECK_FALSE(micro.speculativeGaps);
+  CHECK_FALSE(micro.impulseTotals);
+  CHECK_FALSE(micro.severityCountsPushedPoints);
+  CHECK(micro.warmStart);                   // a key after the preset still applies
+  CHECK(micro.removeAccelerationVelocity);  // the lecture's own fixes stay on
+  CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\npreset = \"book\"\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:10: unknown preset 'book' for solver 'micro' (known: 'lecture', for solver "
+        "'micro')");
+}
+
 TEST_CASE("[[stack]] and [[pyramid]] expand to touching boxes", "[scene-file][generators]") {
   const SceneFile scene = parseScene(
       "[[stack]]\ncount = 3\nsize = [1, 0.5]\nbase = [10, 0]\nlevel_offset = 0.1\n"
@@ -233,7 +251,7 @@ TEST_CASE("each kind of bad input is one error at its place", "[scene-file][erro
     MicroCollisionSettings micro;
     CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nwarm_starting = true\n" + ball) ==
           "bad.toml:4:1: unknown key 'warm_starting' in [solver] for solver 'micro' (known: " +
-              fieldNames(describe(micro)) + ")");
+              fieldNames(describe(micro)) + ", preset)");
     CHECK(errorOf("[bodies]\nx = 1\n") ==
           "bad.toml:1:2: unknown key 'bodies' in the scene file (known: world, solver, render, "
           "body, stack, pyramid)");

@@ -15,6 +15,15 @@ std::vector<SettingField> describe(WorldSettings& s) {
           {"time_to_sleep", &s.timeToSleep}};
 }
 
+MicroCollisionSettings MicroCollisionSettings::lecture() {
+  MicroCollisionSettings settings;
+  settings.speculativeGaps = false;
+  settings.impulseTotals = false;
+  settings.severityCountsPushedPoints = false;
+  settings.warmStart = false;
+  return settings;
+}
+
 std::vector<SettingField> describe(MicroCollisionSettings& s) {
   return {{"remove_acceleration_velocity", &s.removeAccelerationVelocity},
           {"lower_restitution_at_low_speed", &s.lowerRestitutionAtLowSpeed},
@@ -25,7 +34,11 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"velocity_iterations_per_contact", &s.velocityIterationsPerContact},
           {"position_iterations_per_contact", &s.positionIterationsPerContact},
           {"angular_move_limit", &s.angularMoveLimit},
-          {"singular_matrix_tolerance", &s.singularMatrixTolerance}};
+          {"singular_matrix_tolerance", &s.singularMatrixTolerance},
+          {"speculative_gaps", &s.speculativeGaps},
+          {"impulse_totals", &s.impulseTotals},
+          {"severity_counts_pushed_points", &s.severityCountsPushedPoints},
+          {"warm_start", &s.warmStart}};
 }
 
 namespace {

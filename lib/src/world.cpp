@@ -25,6 +25,7 @@ void carryOverImpulses(const Manifold& previous, Manifold& manifold) {
       if (previous.points[j].id != point.id) continue;
       point.normalImpulse = previous.points[j].normalImpulse;
       point.tangentImpulse = previous.points[j].tangentImpulse;
+      point.bounced = previous.points[j].bounced;
     }
   }
 }

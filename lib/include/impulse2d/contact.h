@@ -46,6 +46,9 @@ struct ContactPoint {
   /// N s. Total friction impulse along the tangent this step.
   double tangentImpulse = 0.0;
   FrictionState friction = FrictionState::None;
+  /// The micro-collision resolver gave this point a bounce this step. Carried to the next step
+  /// by feature id, so the bounce is not warm-started as if it were resting weight.
+  bool bounced = false;
 };
 
 /// Coefficients of a contact from the two materials. The mixing rule is Box2D's, so both engines

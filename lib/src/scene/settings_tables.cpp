@@ -24,6 +24,19 @@ void readSolverName(const toml::table& world, Scene& scene) {
   scene.solver = name;
 }
 
+/// `[solver] preset = "lecture"`: the micro-collision resolver as the lecture states it, every
+/// refinement of ours off (MicroCollisionSettings::lecture()); keys after it still apply.
+void readPreset(const toml::table& solver, Scene& scene) {
+  const toml::node* node = solver.get("preset");
+  if (!node) return;
+  const std::string name = readString(*node, "preset");
+  if (scene.solver != "micro" || name != "lecture") {
+    fail(node->source(), "unknown preset '" + name + "' for solver '" + scene.solver +
+                             "' (known: 'lecture', for solver 'micro')");
+  }
+  scene.solverSettings.micro = MicroCollisionSettings::lecture();
+}
+
 }  // namespace
 
 void readWorld(const toml::table& root, Scene& scene) {
@@ -37,7 +50,8 @@ void readWorld(const toml::table& root, Scene& scene) {
 void readSolver(const toml::table& root, Scene& scene) {
   const toml::table* solver = findTable(root, "solver");
   if (!solver) return;
-  readSettingsTable(*solver, solverSettingFields(scene.solverSettings, scene.solver), {},
+  readPreset(*solver, scene);
+  readSettingsTable(*solver, solverSettingFields(scene.solverSettings, scene.solver), {"preset"},
                     "[solver] for solver '" + scene.solver + "'");
 }
 

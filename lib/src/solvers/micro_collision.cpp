@@ -13,6 +13,17 @@
 namespace impulse2d {
 namespace {
 
+/// Rows and columns of the contact matrix (contact_math.h, contactMatrix).
+enum ContactAxis : int { Normal = 0, Tangent = 1 };
+
+/// The parts of a (normal, tangent) pair: velocities, velocity changes and impulses at a contact.
+double normalPart(const Vec2& pair) {
+  return pair.x();
+}
+double tangentPart(const Vec2& pair) {
+  return pair.y();
+}
+
 /// The penetration of a manifold's point as the bodies stand now.
 double penetrationNow(const StepContext& context, int manifoldIndex, int point) {
   const Manifold& manifold = context.manifolds[manifoldIndex];
@@ -26,7 +37,7 @@ double penetrationNow(const StepContext& context, int manifoldIndex, int point) 
 void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   prepare(context);
   queueKeys_.clear();
-  for (const PointState& state : states_) queueKeys_.push_back(severity(state));
+  for (const PointState& state : states_) queueKeys_.push_back(severity(context, state));
   queue_.reset(queueKeys_);
   const int maxIterations = settings_.velocityIterationsPerContact * int(states_.size());
   report_ = SolveReport{};
@@ -37,7 +48,7 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
     ++report_.iterations;
   }
   const int remaining = worstVelocityPoint();
-  report_.residual = remaining < 0 ? 0.0 : severity(states_[remaining]);
+  report_.residual = remaining < 0 ? 0.0 : severity(context, states_[remaining]);
   report_.converged = remaining < 0;
 }
 
@@ -46,32 +57,54 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
   states_.clear();
   for (int m = 0; m < int(context.manifolds.size()); ++m) {
     Manifold& manifold = context.manifolds[m];
-    const Body& a = context.bodies[manifold.bodyA];
-    const Body& b = context.bodies[manifold.bodyB];
     for (int p = 0; p < manifold.pointCount; ++p) {
-      ContactPoint& point = manifold.points[p];
-      point.normalImpulse = 0.0;
-      point.tangentImpulse = 0.0;
-      point.friction = FrictionState::None;
-      PointState state;
-      state.manifold = m;
-      state.point = p;
-      state.contactMatrix = contactMatrix(a, b, point.point, manifold.normal);
-      state.inverseContactMatrix =
-          inverseOrZero(state.contactMatrix, settings_.singularMatrixTolerance);
-      state.contactVelocity = contactVelocity(a, b, point.point, manifold.normal);
-      state.penetration = point.penetration;
-      const double separatingVelocity = state.contactVelocity.x();
-      const double restitution = appliedRestitution(manifold, -separatingVelocity);
-      const double bounce = std::max(
-          0.0, -restitution * (separatingVelocity - accelerationVelocity(context, manifold)));
-      // Without a bounce, a contact with a gap may close it within the step, and no more.
-      state.targetNormalVelocity =
-          bounce > 0.0 ? bounce : std::min(0.0, point.penetration / context.dt);
-      states_.push_back(state);
+      states_.push_back(preparePoint(context, m, p));
     }
   }
+  for (PointState& state : states_) {
+    const Manifold& manifold = context.manifolds[state.manifold];
+    state.contactVelocity =
+        contactVelocity(context.bodies[manifold.bodyA], context.bodies[manifold.bodyB],
+                        manifold.points[state.point].point, manifold.normal);
+  }
   indexContactsByBody(context);
+}
+
+// One point's state before the solve; with warm starting, its last totals are applied at once.
+MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepContext& context,
+                                                                    int manifoldIndex,
+                                                                    int pointIndex) const {
+  Manifold& manifold = context.manifolds[manifoldIndex];
+  ContactPoint& point = manifold.points[pointIndex];
+  PointState state;
+  state.manifold = manifoldIndex;
+  state.point = pointIndex;
+  state.contactMatrix = contactMatrix(context.bodies[manifold.bodyA],
+                                      context.bodies[manifold.bodyB], point.point, manifold.normal);
+  state.inverseContactMatrix =
+      inverseOrZero(state.contactMatrix, settings_.singularMatrixTolerance);
+  state.penetration = point.penetration;
+  state.accelerationVelocity = accelerationVelocity(context, manifold);
+  state.totalImpulse = warmStartTotals(manifold, point);
+  point.normalImpulse = normalPart(state.totalImpulse);
+  point.tangentImpulse = tangentPart(state.totalImpulse);
+  point.friction = FrictionState::None;
+  point.bounced = false;
+  if (normalPart(state.totalImpulse) > 0.0) {
+    applyContactImpulse(context.bodies, manifold, pointIndex, normalPart(state.totalImpulse),
+                        tangentPart(state.totalImpulse));
+  }
+  return state;
+}
+
+// Warm starting: the (normal, tangent) totals the point ended the last step with, matched by
+// feature id, kept inside the friction cone. A bounce is not resting weight: a point that bounced
+// starts from zero, as does every point with warm starting off.
+Vec2 MicroCollisionSolver::warmStartTotals(const Manifold& manifold,
+                                           const ContactPoint& point) const {
+  if (!settings_.warmStart || point.bounced || point.normalImpulse <= 0.0) return Vec2::Zero();
+  const double frictionLimit = settings_.friction ? manifold.friction * point.normalImpulse : 0.0;
+  return Vec2(point.normalImpulse, std::clamp(point.tangentImpulse, -frictionLimit, frictionLimit));
 }
 
 // Lists, for every body, the contact points it takes part in (compressed rows), so an impulse
@@ -115,29 +148,52 @@ double MicroCollisionSolver::accelerationVelocity(const StepContext& context,
   return context.dt * relativeAcceleration.dot(manifold.normal);
 }
 
-// The velocity change a contact point wants: along the normal, the bounce target minus the
-// separating velocity while the contact penetrates or its gap would close within the step (a
-// speculative contact, found one step early rather than one step deep); along the tangent, all
-// the slip.
-Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state) const {
-  const double separatingVelocity = state.contactVelocity.x();
-  const bool closesThisStep = separatingVelocity * dt_ < state.penetration;
-  const bool pressed = state.totalImpulse.x() > 0.0;
-  const double normalChange = state.penetration >= 0.0 || closesThisStep || pressed
-                                  ? state.targetNormalVelocity - separatingVelocity
-                                  : 0.0;
-  return Vec2(normalChange, -state.contactVelocity.y());
+// The separating velocity a point wants. Until it has bounced, the bounce −c·(vs − vacc) on its
+// closing velocity *now*: as in Millington's resolver, an impulse at a neighbour that changes vs
+// changes the bounce, so a collision passes along a row of touching bodies. Without a bounce
+// (or once it has had it), a contact with a speculative gap may close it within the step, and no
+// more; a touching one should stop closing.
+double MicroCollisionSolver::targetNormalVelocity(const PointState& state,
+                                                  const Manifold& manifold) const {
+  const double separatingVelocity = normalPart(state.contactVelocity);
+  if (!state.bounced) {
+    const double restitution = appliedRestitution(manifold, -separatingVelocity);
+    const double bounce = -restitution * (separatingVelocity - state.accelerationVelocity);
+    if (bounce > 0.0) return bounce;
+  }
+  return settings_.speculativeGaps ? std::min(0.0, state.penetration / dt_) : 0.0;
+}
+
+// The velocity change a contact point wants. Along the normal, the lecture's
+// Δv = −vs − c·(vs − vacc), i.e. the target minus the separating velocity, while the contact
+// touches, or (speculative gaps) its gap would close within the step, or (impulse totals) this
+// update already pushes it. Along the tangent, all the slip. A point that has bounced is
+// afterwards only kept from closing, so a later impulse at a neighbour does not bounce it again,
+// nor take its bounce back.
+Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state,
+                                                 const Manifold& manifold) const {
+  const double separatingVelocity = normalPart(state.contactVelocity);
+  const bool gapCloses = settings_.speculativeGaps && separatingVelocity * dt_ < state.penetration;
+  const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
+  double normalChange = state.penetration >= 0.0 || gapCloses || pressed
+                            ? targetNormalVelocity(state, manifold) - separatingVelocity
+                            : 0.0;
+  if (state.bounced) normalChange = std::max(0.0, normalChange);
+  return Vec2(normalChange, -tangentPart(state.contactVelocity));
 }
 
 // How badly a point needs resolving. A point not yet pushed in this update counts only its
 // normal need, as in the lecture; a point this update already pushes also counts being pushed
 // too hard and, while its friction is static, the slip left by impulses at its neighbours — so
 // the impulses of one update converge to resting contact instead of leaving a box rocking.
-double MicroCollisionSolver::severity(const PointState& state) const {
-  const Vec2 desired = desiredVelocityChange(state);
-  if (state.totalImpulse.x() <= 0.0) return desired.x();
-  const double slip = state.friction == FrictionState::Static ? std::abs(desired.y()) : 0.0;
-  return std::max(std::abs(desired.x()), slip);
+double MicroCollisionSolver::severity(const StepContext& context, const PointState& state) const {
+  const Vec2 desired = desiredVelocityChange(state, context.manifolds[state.manifold]);
+  if (!settings_.severityCountsPushedPoints || normalPart(state.totalImpulse) <= 0.0) {
+    return normalPart(desired);
+  }
+  const double slip =
+      state.friction == FrictionState::Static ? std::abs(tangentPart(desired)) : 0.0;
+  return std::max(std::abs(normalPart(desired)), slip);
 }
 
 int MicroCollisionSolver::worstVelocityPoint() const {
@@ -145,57 +201,67 @@ int MicroCollisionSolver::worstVelocityPoint() const {
   return queue_.worst();
 }
 
-// The total impulse (normal, tangent) at a point after this micro-collision: the inverse contact
-// matrix turns the desired velocity change into an impulse. Beyond the limit of static friction,
-// dynamic friction: the tangent total is exactly μ times the normal total, against the slip, and
-// the normal part is recomputed so the normal target still holds. The totals of one update can
-// push but never pull. For the first impulse at a point (totals zero) this is the lecture's rule.
-Vec2 MicroCollisionSolver::newTotalImpulse(const PointState& state, double friction,
-                                           const Vec2& desiredChange,
+// The total impulse (normal, tangent) at a point after this micro-collision, from the totals
+// `before` it: the inverse contact matrix turns the desired velocity change into an impulse.
+// Beyond the limit of static friction, dynamic friction: the tangent total is exactly μ times
+// the normal total, in the direction of the trial tangent total (the impulse static friction
+// would need), and the normal part is recomputed so the normal target still holds. Taking the
+// direction from the slip left after earlier impulses instead turns friction the wrong way on a
+// slope at rest, step after step. The totals can push but never pull. From zero totals this is
+// the lecture's rule.
+Vec2 MicroCollisionSolver::newTotalImpulse(const PointState& state, const Vec2& before,
+                                           double friction, const Vec2& desiredChange,
                                            FrictionState& frictionState) const {
   const Mat2& matrix = state.contactMatrix;
-  const Vec2& total = state.totalImpulse;
-  const double frictionlessNormal = std::max(0.0, total.x() + desiredChange.x() / matrix(0, 0));
+  const double frictionlessNormal =
+      std::max(0.0, normalPart(before) + normalPart(desiredChange) /
+                                             matrix(ContactAxis::Normal, ContactAxis::Normal));
   frictionState = FrictionState::None;
   if (!settings_.friction || friction <= 0.0) return Vec2(frictionlessNormal, 0.0);
 
-  const Vec2 proposed = total + state.inverseContactMatrix * desiredChange;
-  if (proposed.x() > 0.0 && std::abs(proposed.y()) <= friction * proposed.x()) {
+  const Vec2 trial = before + state.inverseContactMatrix * desiredChange;
+  if (normalPart(trial) > 0.0 && std::abs(tangentPart(trial)) <= friction * normalPart(trial)) {
     frictionState = FrictionState::Static;
-    return proposed;
+    return trial;
   }
-  const double slip = -desiredChange.y();
-  const double againstSlip =
-      slip != 0.0 ? -std::copysign(1.0, slip) : std::copysign(1.0, proposed.y());
-  const double coupling = matrix(0, 0) + matrix(0, 1) * againstSlip * friction;
+  const double direction = std::copysign(1.0, tangentPart(trial));
+  const double coupling = matrix(ContactAxis::Normal, ContactAxis::Normal) +
+                          matrix(ContactAxis::Normal, ContactAxis::Tangent) * direction * friction;
   if (coupling <= settings_.singularMatrixTolerance) return Vec2(frictionlessNormal, 0.0);
   const double normalChange =
-      (desiredChange.x() - matrix(0, 1) * (againstSlip * friction * total.x() - total.y())) /
+      (normalPart(desiredChange) -
+       matrix(ContactAxis::Normal, ContactAxis::Tangent) *
+           (direction * friction * normalPart(before) - tangentPart(before))) /
       coupling;
-  const double normal = std::max(0.0, total.x() + normalChange);
+  const double normal = std::max(0.0, normalPart(before) + normalChange);
   frictionState = FrictionState::Dynamic;
-  return Vec2(normal, againstSlip * friction * normal);
+  return Vec2(normal, direction * friction * normal);
 }
 
+// One micro-collision: the impulse that takes the point from its totals to the new ones. Without
+// impulse totals each impulse is computed alone, from zero, as the lecture does.
 void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int index,
                                                int iteration) {
   PointState& state = states_[index];
   Manifold& manifold = context.manifolds[state.manifold];
   ContactPoint& point = manifold.points[state.point];
-  const Vec2 desired = desiredVelocityChange(state);
-  const Vec2 total = newTotalImpulse(state, manifold.friction, desired, state.friction);
-  const Vec2 impulse = total - state.totalImpulse;
-  state.totalImpulse = total;
-  point.normalImpulse = total.x();
-  point.tangentImpulse = total.y();
+  const Vec2 desired = desiredVelocityChange(state, manifold);
+  const bool bounces = !state.bounced && targetNormalVelocity(state, manifold) > 0.0;
+  const Vec2 before = settings_.impulseTotals ? state.totalImpulse : Vec2::Zero();
+  const Vec2 impulse =
+      newTotalImpulse(state, before, manifold.friction, desired, state.friction) - before;
+  state.totalImpulse += impulse;
+  state.bounced = state.bounced || bounces;
+  point.bounced = state.bounced;
+  point.normalImpulse = normalPart(state.totalImpulse);
+  point.tangentImpulse = tangentPart(state.totalImpulse);
   point.friction = state.friction;
-  const Vec2 worldImpulse = impulse.x() * manifold.normal + impulse.y() * manifold.tangent();
-  context.bodies[manifold.bodyA].applyImpulse(-worldImpulse, point.point);
-  context.bodies[manifold.bodyB].applyImpulse(worldImpulse, point.point);
+  applyContactImpulse(context.bodies, manifold, state.point, normalPart(impulse),
+                      tangentPart(impulse));
   refreshContactVelocities(context, manifold.bodyA);
   refreshContactVelocities(context, manifold.bodyB);
-  context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point, desired.x(),
-                  impulse.x(), impulse.y()});
+  context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point,
+                  normalPart(desired), normalPart(impulse), tangentPart(impulse)});
 }
 
 void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, int bodyIndex) {
@@ -206,7 +272,7 @@ void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, 
     state.contactVelocity =
         contactVelocity(context.bodies[manifold.bodyA], context.bodies[manifold.bodyB],
                         manifold.points[state.point].point, manifold.normal);
-    queue_.update(contactsOfBody_[i], severity(state));
+    queue_.update(contactsOfBody_[i], severity(context, state));
   }
 }
 

@@ -29,23 +29,25 @@ class MicroCollisionSolver : public ContactSolver {
     Mat2 contactMatrix = Mat2::Zero();         ///< unit impulse -> velocity change
     Mat2 inverseContactMatrix = Mat2::Zero();  ///< velocity change -> impulse
     Vec2 contactVelocity = Vec2::Zero();       ///< (normal, tangent) relative velocity now
-    /// The separating velocity wanted: the bounce −c·(vs − vacc), fixed before the solve, or
-    /// without a bounce −gap/dt for a contact with a gap (it may close it, no more).
-    double targetNormalVelocity = 0.0;
-    double penetration = 0.0;          ///< m, kept current while bodies move
-    Vec2 totalImpulse = Vec2::Zero();  ///< (normal, tangent) applied here in this update
+    double accelerationVelocity = 0.0;  ///< vacc: the last update's acceleration along n, m/s
+    bool bounced = false;               ///< had its bounce this step (targetNormalVelocity)
+    double penetration = 0.0;           ///< m, kept current while bodies move
+    Vec2 totalImpulse = Vec2::Zero();   ///< (normal, tangent) applied here in this update
     FrictionState friction = FrictionState::None;
   };
 
   void prepare(const StepContext& context);
+  PointState preparePoint(const StepContext& context, int manifoldIndex, int pointIndex) const;
+  Vec2 warmStartTotals(const Manifold& manifold, const ContactPoint& point) const;
   void indexContactsByBody(const StepContext& context);
   double appliedRestitution(const Manifold& manifold, double closingSpeed) const;
   double accelerationVelocity(const StepContext& context, const Manifold& manifold) const;
-  Vec2 desiredVelocityChange(const PointState& state) const;
-  double severity(const PointState& state) const;
+  double targetNormalVelocity(const PointState& state, const Manifold& manifold) const;
+  Vec2 desiredVelocityChange(const PointState& state, const Manifold& manifold) const;
+  double severity(const StepContext& context, const PointState& state) const;
   int worstVelocityPoint() const;
-  Vec2 newTotalImpulse(const PointState& state, double friction, const Vec2& desiredChange,
-                       FrictionState& frictionState) const;
+  Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
+                       const Vec2& desiredChange, FrictionState& frictionState) const;
   void applyVelocityChange(const StepContext& context, int index, int iteration);
   void refreshContactVelocities(const StepContext& context, int bodyIndex);
 

@@ -1,0 +1,130 @@
+// Static and dynamic friction of the micro-collision resolver on slopes (lecture 3.6, issue 13):
+// a box or a regular pentagon on a static slope of 5° to 25° holds still when μ > tan θ and
+// slides at a = g(sin θ − μ cos θ) when μ < tan θ, whether it starts at rest on the slope or lands
+// on it from a small drop.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+#include "lecture_scenes.h"
+
+using namespace impulse2d;
+
+namespace {
+
+constexpr double kDt = 1.0 / 60.0;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDrop = 0.02;        ///< m: the small drop onto the slope
+constexpr double kSettled = 1.0;      ///< s: landing is over by then (a 2 cm fall takes 0.064 s)
+constexpr double kHoldSeconds = 5.0;  ///< s: how long a holding body is watched
+constexpr double kHoldMargin = 0.1;   ///< μ − tan θ of a body that must hold
+constexpr double kSlideMargin = 0.05;
+/// m. The velocity solve stops once no slip exceeds velocityEpsilon (1e-4 m/s), so a resolver
+/// that starts every step from zero totals may creep at up to that speed: 0.5 mm in 5 s. Warm
+/// started from the totals that held it last step, a body keeps no creep in one direction; half
+/// that bound (the issue asks for < 1 mm) fails the resolver as it was (0.55 mm at 25°).
+constexpr double kHoldBound = 0.5 * 1e-4 * kHoldSeconds;  ///< tan θ − μ of a body that must slide
+constexpr double kPentagonRadius = 0.6;                   ///< m, centre to corner
+
+double degrees(double d) {
+  return d * kPi / 180.0;
+}
+
+/// A regular pentagon lying on one edge of `ground(…, angle)`: its centroid an apothem
+/// R·cos 36° (plus `lift`) above the surface.
+BodyDef pentagonOnSlope(double angle, double friction, double lift) {
+  std::vector<Vec2> vertices;
+  for (int k = 0; k < 5; ++k) {
+    const double at = degrees(-126.0 + 72.0 * k);
+    vertices.emplace_back(kPentagonRadius * std::cos(at), kPentagonRadius * std::sin(at));
+  }
+  BodyDef def;
+  def.name = "pentagon";
+  def.shape = makePolygon(vertices).shape;
+  def.angle = angle;
+  const Vec2 normal(-std::sin(angle), std::cos(angle));
+  def.position = (kPentagonRadius * std::cos(degrees(36.0)) + lift) * normal;
+  def.friction = friction;
+  return def;
+}
+
+BodyDef bodyOnSlope(const std::string& shape, double angle, double friction, double lift) {
+  if (shape == "box") return lecture::boxOnSlope(Vec2(1.0, 1.0), angle, friction, lift);
+  return pentagonOnSlope(angle, friction, lift);
+}
+
+struct SlopeRun {
+  double moved = 0.0;         ///< m down the slope in kHoldSeconds from `watchFrom`
+  double acceleration = 0.0;  ///< m/s² down the slope over the 2 s after kSettled
+};
+
+/// Runs the body on the slope. It is watched for kHoldSeconds from the start when placed at rest
+/// (the first steps from rest are where a resolver lets go), from kSettled when dropped.
+SlopeRun runOnSlope(const BodyDef& body, double angle, double friction, bool dropped) {
+  Scene scene = lecture::sceneWith("micro", kDt);
+  scene.bodies.push_back(lecture::ground(friction, angle));
+  scene.bodies.push_back(body);
+  auto world = buildWorld(scene);
+  const Vec2 down = lecture::downSlope(angle);
+  const int settledStep = int(std::lround(kSettled / kDt));
+  const int watchFrom = dropped ? settledStep : 0;
+  const int lastStep = watchFrom + int(std::lround(kHoldSeconds / kDt));
+  const int twoSecondsLater = settledStep + int(std::lround(2.0 / kDt));
+  Vec2 watchedFrom = world->bodies()[1].position;
+  double settledSpeed = 0.0;
+  SlopeRun run;
+  for (int step = 1; step <= lastStep; ++step) {
+    world->step();
+    const Body& moving = world->bodies()[1];
+    if (step == watchFrom) watchedFrom = moving.position;
+    if (step == settledStep) settledSpeed = moving.velocity.dot(down);
+    if (step == twoSecondsLater) {
+      run.acceleration = (moving.velocity.dot(down) - settledSpeed) / 2.0;
+    }
+  }
+  run.moved = (world->bodies()[1].position - watchedFrom).dot(down);
+  return run;
+}
+
+}  // namespace
+
+TEST_CASE("boxes and pentagons hold on slopes steeper than 5° when μ > tan θ",
+          "[friction][static][slope]") {
+  for (const std::string shape : {"box", "pentagon"}) {
+    for (double angleDegrees : {5.0, 10.0, 20.0, 25.0}) {
+      for (double lift : {0.0, kDrop}) {
+        const double angle = degrees(angleDegrees);
+        const double friction = std::tan(angle) + kHoldMargin;
+        const SlopeRun run =
+            runOnSlope(bodyOnSlope(shape, angle, friction, lift), angle, friction, lift > 0.0);
+        std::cout << "figure: " << shape << " on " << angleDegrees << " deg, mu " << friction
+                  << (lift > 0.0 ? ", dropped" : ", at rest") << ": moved " << run.moved * 1e3
+                  << " mm in " << kHoldSeconds << " s\n";
+        INFO(shape << " on " << angleDegrees << " deg, lift " << lift);
+        CHECK(std::abs(run.moved) < kHoldBound);
+      }
+    }
+  }
+}
+
+TEST_CASE("boxes and pentagons slide at g(sin θ − μ cos θ) when μ < tan θ",
+          "[friction][dynamic][slope]") {
+  for (const std::string shape : {"box", "pentagon"}) {
+    for (double angleDegrees : {5.0, 10.0, 20.0, 25.0}) {
+      for (double lift : {0.0, kDrop}) {
+        const double angle = degrees(angleDegrees);
+        const double friction = std::tan(angle) - kSlideMargin;
+        const SlopeRun run =
+            runOnSlope(bodyOnSlope(shape, angle, friction, lift), angle, friction, lift > 0.0);
+        const double expected = lecture::kGravity * (std::sin(angle) - friction * std::cos(angle));
+        std::cout << "figure: " << shape << " on " << angleDegrees << " deg, mu " << friction
+                  << (lift > 0.0 ? ", dropped" : ", at rest") << ": a = " << run.acceleration
+                  << " m/s^2, analytic " << expected << "\n";
+        INFO(shape << " on " << angleDegrees << " deg, lift " << lift);
+        CHECK(run.acceleration == Approx(expected).epsilon(0.02));
+      }
+    }
+  }
+}

@@ -1,0 +1,40 @@
+// The worst-first queue of the micro-collision resolver: after any sequence of key changes, the
+// item it names is one with the largest key, as a scan of every key would find.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "impulse2d/solvers/worst_first_queue.h"
+
+using namespace impulse2d;
+
+TEST_CASE("the worst-first queue names the largest key after every change", "[micro][queue]") {
+  std::mt19937 random(13);  // fixed seed: the same sequence every run
+  std::uniform_real_distribution<double> key(-1.0, 1.0);
+  std::uniform_int_distribution<int> item(0, 99);
+  std::vector<double> keys(100);
+  for (double& k : keys) k = key(random);
+  WorstFirstQueue queue;
+  queue.reset(keys);
+  CHECK(queue.worstKey() == *std::max_element(keys.begin(), keys.end()));
+  int mismatches = 0;
+  for (int change = 0; change < 10000; ++change) {
+    const int changed = item(random);
+    keys[changed] = key(random);
+    queue.update(changed, keys[changed]);
+    const double largest = *std::max_element(keys.begin(), keys.end());
+    if (queue.worstKey() != largest || keys[queue.worst()] != largest) ++mismatches;
+  }
+  CHECK(mismatches == 0);
+}
+
+TEST_CASE("an empty worst-first queue says so", "[micro][queue]") {
+  WorstFirstQueue queue;
+  queue.reset({});
+  CHECK(queue.empty());
+  queue.reset({0.5});
+  CHECK_FALSE(queue.empty());
+  CHECK(queue.worst() == 0);
+}
