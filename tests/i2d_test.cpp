@@ -423,3 +423,12 @@ TEST_CASE("frame options without --frames, and bad overlays, are usage errors",
     CHECK(outcome.err == message);
   }
 }
+
+TEST_CASE("a reference solve that fails ends the run with one error line and exit code 1",
+          "[i2d][reference]") {
+  const Outcome outcome =
+      i2d("run " + kScenes + "stack.toml --solver reference --set solver.max_pivots=3");
+  CHECK(outcome.exitCode == 1);
+  CHECK(outcome.err.rfind("error: reference solver: Lemke: pivot limit of 3 reached", 0) == 0);
+  CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+}

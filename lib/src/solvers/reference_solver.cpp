@@ -44,6 +44,13 @@ double pointViolation(double normalImpulse, double tangentImpulse, double normal
                    std::min(sliding, alongSliding)});
 }
 
+/// N s. A body's momentum as seen from a point: m|v|, or I|ω| over the point's lever arm.
+double momentumAt(const Body& body, const Vec2& point) {
+  const double lever = (point - body.position).norm();
+  const double angular = lever > 0.0 ? body.inertia * std::abs(body.angularVelocity) / lever : 0.0;
+  return std::max(body.mass * body.velocity.norm(), angular);
+}
+
 }  // namespace
 
 void ReferenceSolver::solveVelocities(const StepContext& context) {
@@ -83,7 +90,8 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
       rows_.push_back(
           PointRow{static_cast<int>(m), i, manifold.friction,
                    targetSeparatingVelocity(normalVelocity, point.penetration, manifold.restitution,
-                                            context.dt, settings_.targets)});
+                                            context.dt, settings_.targets),
+                   std::max(momentumAt(a, point.point), momentumAt(b, point.point))});
     }
   }
 }
@@ -193,8 +201,24 @@ double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
                                     row.friction, 1.0 / delassus_(2 * i, 2 * i),
                                     1.0 / delassus_(2 * i + 1, 2 * i + 1)));
   }
-  const double largest = impulses.cwiseAbs().maxCoeff();
-  return largest > 0.0 ? worst / largest : worst;
+  const double scale = impulseScale(impulses);
+  return scale > 0.0 ? worst / scale : worst;
+}
+
+// N s. The size of the step's impulses, so that the residual is relative to something that
+// cannot vanish when the answer does (a corner touching down, an elastic row that has already
+// separated, where every impulse is 0 and rounding is all that is left): the largest impulse, each
+// point's cancelling impulses (what stops its normal and tangent motion alone, velocity over
+// effective mass) and the momenta of the bodies in contact (m|v|, and I|ω| over the point's lever
+// arm).
+double ReferenceSolver::impulseScale(const Eigen::VectorXd& impulses) const {
+  double scale = impulses.cwiseAbs().maxCoeff();
+  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+    scale = std::max({scale, std::abs(lcpVector_(kVariablesPerPoint * i)) / delassus_(2 * i, 2 * i),
+                      std::abs(freeVelocity_(2 * i + 1)) / delassus_(2 * i + 1, 2 * i + 1),
+                      rows_[static_cast<size_t>(i)].momentum});
+  }
+  return scale;
 }
 
 void ReferenceSolver::applyImpulses(const StepContext& context,

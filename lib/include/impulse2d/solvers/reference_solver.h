@@ -29,7 +29,8 @@ class ReferenceSolver : public ContactSolver {
   /// The same position pass as sequential impulses (position_correction.h).
   void solvePositions(const StepContext& context) override;
   /// iterations: Lemke pivots; residual: the worst violated condition in N s, relative to the
-  /// largest impulse.
+  /// step's impulse scale (the largest of the impulses, each point's cancelling impulses and the
+  /// momenta of the bodies in contact).
   SolveReport lastReport() const override { return report_; }
 
   /// The Delassus matrix of the last solve: rows/columns 2i (normal) and 2i+1 (tangent) of point
@@ -46,6 +47,7 @@ class ReferenceSolver : public ContactSolver {
     int point = 0;
     double friction = 0.0;
     double targetNormalVelocity = 0.0;
+    double momentum = 0.0;  ///< N s, the larger of its two bodies' momenta seen from the point
   };
 
   void collectPoints(const StepContext& context);
@@ -55,6 +57,7 @@ class ReferenceSolver : public ContactSolver {
   LcpSolution solveLcp() const;
   Eigen::VectorXd contactImpulses(const Eigen::VectorXd& lcpSolution) const;
   double residual(const Eigen::VectorXd& impulses) const;
+  double impulseScale(const Eigen::VectorXd& impulses) const;
   void applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) const;
   void fail(const std::string& reason);
 
