@@ -54,9 +54,15 @@ double momentumAt(const Body& body, const Vec2& point) {
 }  // namespace
 
 void ReferenceSolver::solveVelocities(const StepContext& context) {
+  const Eigen::VectorXd impulses = exactImpulses(context);
+  if (rows_.empty()) return;  // nothing touches: no system to solve
+  applyImpulses(context, impulses);
+}
+
+Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
   report_ = SolveReport{};
   collectPoints(context);
-  if (rows_.empty()) return;  // nothing touches: no system to solve
+  if (rows_.empty()) return {};
   buildDelassus(context);
   buildFreeVelocity(context);
   formulateLcp();
@@ -73,7 +79,7 @@ void ReferenceSolver::solveVelocities(const StepContext& context) {
            << naturalResidual(lcpMatrix_, lcpVector_, solution.z) << ")";
     fail(reason.str());
   }
-  applyImpulses(context, impulses);
+  return impulses;
 }
 
 // The targets use the closing velocity before the solve, with the same rules (bounce threshold,

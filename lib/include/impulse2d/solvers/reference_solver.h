@@ -33,6 +33,13 @@ class ReferenceSolver : public ContactSolver {
   /// momenta of the bodies in contact).
   SolveReport lastReport() const override { return report_; }
 
+  /// The step's exact impulses (λn, λt) per point, interleaved in the order of the manifolds and
+  /// their points, without applying them; throws like solveVelocities. Empty when nothing touches.
+  Eigen::VectorXd exactImpulses(const StepContext& context);
+  /// The worst violated physical condition of `impulses` (same layout) on the last solve's
+  /// problem, relative to its impulse scale: what lastReport().residual is for the exact answer.
+  double residual(const Eigen::VectorXd& impulses) const;
+
   /// The Delassus matrix of the last solve: rows/columns 2i (normal) and 2i+1 (tangent) of point
   /// i, in the order of the manifolds and their points; entry (r, c) is the relative velocity
   /// change along r from a unit impulse along c.
@@ -56,7 +63,6 @@ class ReferenceSolver : public ContactSolver {
   void formulateLcp();
   LcpSolution solveLcp() const;
   Eigen::VectorXd contactImpulses(const Eigen::VectorXd& lcpSolution) const;
-  double residual(const Eigen::VectorXd& impulses) const;
   double impulseScale(const Eigen::VectorXd& impulses) const;
   void applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) const;
   void fail(const std::string& reason);
