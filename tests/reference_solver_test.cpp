@@ -168,3 +168,25 @@ TEST_CASE(
   for (const Body& ball : world->bodies()) momentum += ball.mass * ball.velocity.x();
   CHECK(momentum == Approx(world->bodies()[0].mass * kSpeed).epsilon(1e-9));
 }
+
+TEST_CASE("two stacks apart on the ground are two islands, each solved as if alone",
+          "[reference][islands]") {
+  constexpr int kBoxes = 5;
+  Scene one = stackScene("reference", kBoxes, 0.6);
+  Scene two = one;
+  addStack(two, kBoxes, Vec2(1.0, 1.0), Vec2(5.0, 0.0), 0.0, unitBoxMaterial(0.6));
+  auto alone = buildWorld(one);
+  auto both = buildWorld(two);
+  for (int step = 0; step < 10; ++step) {
+    alone->step();
+    both->step();
+    INFO("step " << step);
+    // The ground joins nothing, so the second stack's problem is a copy of the first's.
+    CHECK(both->solver().lastReport().iterations == 2 * alone->solver().lastReport().iterations);
+    for (int level = 0; level < kBoxes; ++level) {
+      const int below = level == 0 ? 0 : kBoxes + level;  // the ground, or the box below
+      CHECK(contactForce(*both, below, kBoxes + level + 1) ==
+            Approx(contactForce(*alone, level, level + 1)).epsilon(1e-12));
+    }
+  }
+}

@@ -63,6 +63,7 @@ Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
   report_ = SolveReport{};
   collectPoints(context);
   if (rows_.empty()) return {};
+  groupIslands(context);
   buildDelassus(context);
   buildFreeVelocity(context);
   formulateLcp();
@@ -166,16 +167,74 @@ void ReferenceSolver::formulateLcp() {
   }
 }
 
+// Union-find over the dynamic bodies: two points share an island when a chain of contacts
+// through dynamic bodies joins them. A static body joins nothing (it takes no impulse, so the
+// points on it do not couple), which is what cuts a pile on the ground into islands.
+void ReferenceSolver::groupIslands(const StepContext& context) {
+  std::vector<int> parent(context.bodies.size());
+  for (size_t b = 0; b < parent.size(); ++b) parent[b] = static_cast<int>(b);
+  const auto root = [&parent](int body) {
+    while (parent[static_cast<size_t>(body)] != body) {
+      body = parent[static_cast<size_t>(body)] =
+          parent[static_cast<size_t>(parent[static_cast<size_t>(body)])];
+    }
+    return body;
+  };
+  for (const PointRow& row : rows_) {
+    const Manifold& manifold = context.manifolds[static_cast<size_t>(row.manifold)];
+    if (context.bodies[static_cast<size_t>(manifold.bodyA)].isStatic() ||
+        context.bodies[static_cast<size_t>(manifold.bodyB)].isStatic()) {
+      continue;
+    }
+    parent[static_cast<size_t>(root(manifold.bodyA))] = root(manifold.bodyB);
+  }
+  std::vector<int> islandOfRoot(parent.size(), -1);
+  islands_.clear();
+  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+    const Manifold& manifold =
+        context.manifolds[static_cast<size_t>(rows_[static_cast<size_t>(i)].manifold)];
+    const bool aStatic = context.bodies[static_cast<size_t>(manifold.bodyA)].isStatic();
+    const int body = root(aStatic ? manifold.bodyB : manifold.bodyA);
+    int& island = islandOfRoot[static_cast<size_t>(body)];
+    if (island < 0) {
+      island = static_cast<int>(islands_.size());
+      islands_.emplace_back();
+    }
+    for (int v = 0; v < kVariablesPerPoint; ++v) {
+      islands_[static_cast<size_t>(island)].push_back(kVariablesPerPoint * i + v);
+    }
+  }
+}
+
+// One LCP per island (the islands do not couple: the matrix is block diagonal in them).
+LcpSolution ReferenceSolver::solveLcp() const {
+  LcpSolution all;
+  all.z = Eigen::VectorXd::Zero(lcpVector_.size());
+  for (const std::vector<int>& island : islands_) {
+    const LcpSolution part = solveIsland(lcpMatrix_(island, island), lcpVector_(island));
+    all.pivots += part.pivots;
+    if (!part.solved) {
+      all.failure = part.failure;
+      return all;
+    }
+    all.z(island) = part.z;
+  }
+  all.w = lcpMatrix_ * all.z + lcpVector_;
+  all.solved = true;
+  return all;
+}
+
 // Lemke on the problem as stated; on a ray (degeneracy defeating the floating-point
 // lexicographic rule) once more on a slightly perturbed q.
-LcpSolution ReferenceSolver::solveLcp() const {
+LcpSolution ReferenceSolver::solveIsland(const Eigen::MatrixXd& matrix,
+                                         const Eigen::VectorXd& vector) const {
   const LemkeSettings& options = settings_.lemke;
-  const LcpSolution solution = solveLemke(lcpMatrix_, lcpVector_, options);
-  if (solution.solved || lcpVector_.size() == 0) return solution;
-  const int size = static_cast<int>(lcpVector_.size());
+  const LcpSolution solution = solveLemke(matrix, vector, options);
+  if (solution.solved || vector.size() == 0) return solution;
+  const int size = static_cast<int>(vector.size());
   const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
-  const double scale = settings_.degeneracyPerturbation * lcpVector_.cwiseAbs().maxCoeff();
-  LcpSolution retry = solveLemke(lcpMatrix_, lcpVector_ + scale * growing, options);
+  const double scale = settings_.degeneracyPerturbation * vector.cwiseAbs().maxCoeff();
+  LcpSolution retry = solveLemke(matrix, vector + scale * growing, options);
   retry.pivots += solution.pivots;
   if (!retry.solved) retry.failure = solution.failure + "; perturbed retry: " + retry.failure;
   return retry;

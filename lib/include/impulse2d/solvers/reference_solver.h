@@ -10,6 +10,8 @@
 // rows too (Stewart–Trinkle): vt + β ⟂ λt⁺, −vt + β ⟂ λt⁻, μλn − λt⁺ − λt⁻ ⟂ β.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Dense>
 
 #include "impulse2d/solver.h"
@@ -61,7 +63,9 @@ class ReferenceSolver : public ContactSolver {
   void buildDelassus(const StepContext& context);
   void buildFreeVelocity(const StepContext& context);
   void formulateLcp();
+  void groupIslands(const StepContext& context);
   LcpSolution solveLcp() const;
+  LcpSolution solveIsland(const Eigen::MatrixXd& matrix, const Eigen::VectorXd& vector) const;
   Eigen::VectorXd contactImpulses(const Eigen::VectorXd& lcpSolution) const;
   double impulseScale(const Eigen::VectorXd& impulses) const;
   void applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) const;
@@ -73,6 +77,8 @@ class ReferenceSolver : public ContactSolver {
   Eigen::VectorXd freeVelocity_;  ///< 2p: (vn, vt) of each point before the solve
   Eigen::MatrixXd lcpMatrix_;     ///< 4p × 4p, variables (λn, λt⁺, λt⁻, β) per point
   Eigen::VectorXd lcpVector_;     ///< 4p
+  /// The LCP variables of each island: points joined through dynamic bodies.
+  std::vector<std::vector<int>> islands_;
   SolveReport report_;
 };
 
