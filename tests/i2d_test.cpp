@@ -423,3 +423,30 @@ TEST_CASE("frame options without --frames, and bad overlays, are usage errors",
     CHECK(outcome.err == message);
   }
 }
+
+TEST_CASE("a reference solve that fails ends the run with one error line and exit code 1",
+          "[i2d][reference]") {
+  const Outcome outcome =
+      i2d("run " + kScenes + "stack.toml --solver reference --set solver.max_pivots=3");
+  CHECK(outcome.exitCode == 1);
+  CHECK(outcome.err.rfind("error: reference solver: Lemke: pivot limit of 3 reached", 0) == 0);
+  CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+}
+
+TEST_CASE("run --error-vs-reference writes one row per solve and summarises the errors",
+          "[i2d][reference]") {
+  const TemporaryDirectory directory;
+  const std::string path = directory / "errors.csv";
+  const Outcome outcome = i2d(
+      "run " + kScenes + "stack.toml --solver sequential --steps 5 --error-vs-reference " + path);
+  CHECK(outcome.exitCode == 0);
+  const std::vector<std::string> lines = readLines(path);
+  REQUIRE(lines.size() == 6);
+  CHECK(lines[0] == "solve,t,points,impulse_error,velocity_error,violation");
+  for (const char* line : {"impulse err  median", "velocity err median", "violation    median"}) {
+    CHECK(outcome.out.find(line) != std::string::npos);
+  }
+  const Outcome both = i2d("run " + kScenes + "stack.toml --csv " + (directory / "t.csv") +
+                           " --error-vs-reference " + path);
+  CHECK(both.exitCode == 2);
+}

@@ -2,6 +2,8 @@
 // limit on a slope, and failures that are reported rather than returned.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 
 #include "impulse2d/solvers/contact_math.h"
@@ -112,4 +114,79 @@ TEST_CASE("a tolerance the answer cannot meet is reported", "[reference][failure
   auto world = buildWorld(scene);
   CHECK_THROWS_WITH(world->step(), Catch::Contains("exceeds the tolerance"));
   CHECK_FALSE(world->solver().lastReport().converged);
+}
+
+TEST_CASE(
+    "a 1×1 box at 30° dropped from 2 m onto a μ 0.5 floor lands on its corner and settles under "
+    "the "
+    "reference",
+    "[reference][residual]") {
+  constexpr double kFriction = 0.5;
+  Scene scene = lecture::sceneWith("reference", kDt);
+  scene.bodies.push_back(lecture::ground(kFriction));
+  BodyDef box = lecture::boxOnSlope(Vec2(1.0, 1.0), 0.0, kFriction);
+  box.position = Vec2(0.0, 2.0);
+  box.angle = std::acos(-1.0) / 6.0;  // 30°
+  scene.bodies.push_back(box);
+  auto world = buildWorld(scene);
+  for (int step = 0; step < stepsIn(3.0); ++step) {
+    INFO("step " << step);
+    REQUIRE_NOTHROW(world->step());
+    REQUIRE(world->solver().lastReport().residual <= ReferenceSolverSettings{}.residualTolerance);
+  }
+  // At rest on a face: the floor carries the weight.
+  CHECK(manifoldForce(*world, 0, false) ==
+        Approx(world->bodies()[1].mass * lecture::kGravity).epsilon(1e-6));
+}
+
+TEST_CASE(
+    "a row of 5 touching elastic frictionless balls, the first struck to 2 m/s, keeps its "
+    "momentum under the reference",
+    "[reference][residual]") {
+  constexpr int kBalls = 5;
+  constexpr double kRadius = 0.5;
+  constexpr double kSpeed = 2.0;
+  Scene scene = lecture::sceneWith("reference", kDt);
+  scene.world.gravity = Vec2::Zero();
+  for (int i = 0; i < kBalls; ++i) {
+    BodyDef ball;
+    ball.shape = makeCircle(kRadius);
+    ball.friction = 0.0;
+    ball.restitution = 1.0;
+    ball.position = Vec2(2.0 * kRadius * i, kRadius);  // touching; ball 0 is struck
+    ball.velocity = Vec2(i == 0 ? kSpeed : 0.0, 0.0);
+    scene.bodies.push_back(ball);
+  }
+  auto world = buildWorld(scene);
+  for (int step = 0; step < 30; ++step) {
+    INFO("step " << step);
+    REQUIRE_NOTHROW(world->step());
+    REQUIRE(world->solver().lastReport().residual <= ReferenceSolverSettings{}.residualTolerance);
+  }
+  // Momentum is conserved exactly by equal and opposite impulses.
+  double momentum = 0.0;
+  for (const Body& ball : world->bodies()) momentum += ball.mass * ball.velocity.x();
+  CHECK(momentum == Approx(world->bodies()[0].mass * kSpeed).epsilon(1e-9));
+}
+
+TEST_CASE("two stacks apart on the ground are two islands, each solved as if alone",
+          "[reference][islands]") {
+  constexpr int kBoxes = 5;
+  Scene one = stackScene("reference", kBoxes, 0.6);
+  Scene two = one;
+  addStack(two, kBoxes, Vec2(1.0, 1.0), Vec2(5.0, 0.0), 0.0, unitBoxMaterial(0.6));
+  auto alone = buildWorld(one);
+  auto both = buildWorld(two);
+  for (int step = 0; step < 10; ++step) {
+    alone->step();
+    both->step();
+    INFO("step " << step);
+    // The ground joins nothing, so the second stack's problem is a copy of the first's.
+    CHECK(both->solver().lastReport().iterations == 2 * alone->solver().lastReport().iterations);
+    for (int level = 0; level < kBoxes; ++level) {
+      const int below = level == 0 ? 0 : kBoxes + level;  // the ground, or the box below
+      CHECK(contactForce(*both, below, kBoxes + level + 1) ==
+            Approx(contactForce(*alone, level, level + 1)).epsilon(1e-12));
+    }
+  }
 }

@@ -8,6 +8,10 @@ namespace i2d {
 /// `i2d run`: runs the scene, writes the CSV if asked, prints the summary.
 int runCommand(const RunOptions& options);
 
+/// `i2d run --error-vs-reference FILE`: the method watched by the reference
+/// (error_vs_reference_run.cpp).
+int errorVsReferenceRun(const RunOptions& options);
+
 /// `i2d check`: validates the scene and prints what it holds.
 int checkCommand(const CheckOptions& options);
 

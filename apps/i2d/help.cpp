@@ -64,6 +64,11 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --trace-step N        with --frames: run to step N (N >= 1) and draw one frame per solver
                         event of that step, DIR/<scene>/<scene>_stepNNNNN_00000.png, ..., and
                         its sheet <scene>_stepNNNNN_sheet.png; box2d cannot be traced
+  --error-vs-reference FILE
+                        at every step also solve the method's pre-solve state exactly (the
+                        global reference) and write solve,t,points,impulse_error,violation to
+                        FILE: ||λ - λ*||/||λ*|| and the worst violated contact condition; the
+                        summary gives their median and largest (docs/global-reference.md)
   --no-overlays         frames show the bodies in their state colours only
   --hide LIST           turn these overlays off, LIST a comma-separated list of
                         rotation_marks, contact_points, contact_normals, normal_impulses,

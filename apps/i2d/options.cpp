@@ -248,7 +248,16 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
   handlers.options["--trace-step"] = [&](const std::string& value) {
     options.traceStep = parseInteger(value, "--trace-step", 1);
   };
+  handlers.options["--error-vs-reference"] = [&](const std::string& value) {
+    options.errorVsReferencePath = value;
+  };
   parse(arguments, "run", handlers, options.scene.scenePath);
+  if (options.errorVsReferencePath &&
+      (options.csvPath || options.frames.directory || options.traceStep)) {
+    throw UsageError(
+        "--error-vs-reference writes its own CSV only; leave out --csv, --frames "
+        "and --trace-step");
+  }
   if (options.frames.video) requireFrames(options.frames, "--video");
   if (options.traceStep) requireFrames(options.frames, "--trace-step");
   if (options.traceStep && (options.csvPath || options.frames.video)) {

@@ -33,6 +33,8 @@ struct RunOptions {
   std::optional<std::string> csvPath;  ///< --csv: the trajectory file
   int every = 1;                       ///< --every: CSV rows and frames every K-th step
   std::optional<int> traceStep;        ///< --trace-step: one frame per solver event of step N
+  /// --error-vs-reference: each step's error against the exact answer goes to this CSV.
+  std::optional<std::string> errorVsReferencePath;
 };
 
 struct CheckOptions {

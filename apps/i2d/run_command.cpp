@@ -108,6 +108,7 @@ int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& 
 }  // namespace
 
 int runCommand(const RunOptions& options) {
+  if (options.errorVsReferencePath) return errorVsReferenceRun(options);
   const SceneFile scene = loadScene(options.scene);
   std::unique_ptr<Simulation> simulation = impulse2d::makeSimulation(scene);
   if (options.traceStep) return traceCommand(options, scene, *simulation);

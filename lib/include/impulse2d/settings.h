@@ -157,7 +157,8 @@ struct LemkeSettings {
 
 /// The global solve of all contact impulses together: the accuracy reference.
 struct ReferenceSolverSettings {
-  /// Required residual of the complementarity problem, relative to the largest impulse.
+  /// Required residual of the physical conditions (N s), relative to the step's impulse scale:
+  /// the largest of the impulses, each point's cancelling impulses and the contact bodies' momenta.
   double residualTolerance = 1e-10;
   /// Lemke's pivot limit and tolerances; reaching the limit is reported, never silently accepted.
   LemkeSettings lemke;

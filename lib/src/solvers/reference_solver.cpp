@@ -44,12 +44,26 @@ double pointViolation(double normalImpulse, double tangentImpulse, double normal
                    std::min(sliding, alongSliding)});
 }
 
+/// N s. A body's momentum as seen from a point: m|v|, or I|ω| over the point's lever arm.
+double momentumAt(const Body& body, const Vec2& point) {
+  const double lever = (point - body.position).norm();
+  const double angular = lever > 0.0 ? body.inertia * std::abs(body.angularVelocity) / lever : 0.0;
+  return std::max(body.mass * body.velocity.norm(), angular);
+}
+
 }  // namespace
 
 void ReferenceSolver::solveVelocities(const StepContext& context) {
+  const Eigen::VectorXd impulses = exactImpulses(context);
+  if (rows_.empty()) return;  // nothing touches: no system to solve
+  applyImpulses(context, impulses);
+}
+
+Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
   report_ = SolveReport{};
   collectPoints(context);
-  if (rows_.empty()) return;  // nothing touches: no system to solve
+  if (rows_.empty()) return {};
+  groupIslands(context);
   buildDelassus(context);
   buildFreeVelocity(context);
   formulateLcp();
@@ -66,7 +80,7 @@ void ReferenceSolver::solveVelocities(const StepContext& context) {
            << naturalResidual(lcpMatrix_, lcpVector_, solution.z) << ")";
     fail(reason.str());
   }
-  applyImpulses(context, impulses);
+  return impulses;
 }
 
 // The targets use the closing velocity before the solve, with the same rules (bounce threshold,
@@ -83,7 +97,8 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
       rows_.push_back(
           PointRow{static_cast<int>(m), i, manifold.friction,
                    targetSeparatingVelocity(normalVelocity, point.penetration, manifold.restitution,
-                                            context.dt, settings_.targets)});
+                                            context.dt, settings_.targets),
+                   std::max(momentumAt(a, point.point), momentumAt(b, point.point))});
     }
   }
 }
@@ -152,16 +167,74 @@ void ReferenceSolver::formulateLcp() {
   }
 }
 
+// Union-find over the dynamic bodies: two points share an island when a chain of contacts
+// through dynamic bodies joins them. A static body joins nothing (it takes no impulse, so the
+// points on it do not couple), which is what cuts a pile on the ground into islands.
+void ReferenceSolver::groupIslands(const StepContext& context) {
+  std::vector<int> parent(context.bodies.size());
+  for (size_t b = 0; b < parent.size(); ++b) parent[b] = static_cast<int>(b);
+  const auto root = [&parent](int body) {
+    while (parent[static_cast<size_t>(body)] != body) {
+      body = parent[static_cast<size_t>(body)] =
+          parent[static_cast<size_t>(parent[static_cast<size_t>(body)])];
+    }
+    return body;
+  };
+  for (const PointRow& row : rows_) {
+    const Manifold& manifold = context.manifolds[static_cast<size_t>(row.manifold)];
+    if (context.bodies[static_cast<size_t>(manifold.bodyA)].isStatic() ||
+        context.bodies[static_cast<size_t>(manifold.bodyB)].isStatic()) {
+      continue;
+    }
+    parent[static_cast<size_t>(root(manifold.bodyA))] = root(manifold.bodyB);
+  }
+  std::vector<int> islandOfRoot(parent.size(), -1);
+  islands_.clear();
+  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+    const Manifold& manifold =
+        context.manifolds[static_cast<size_t>(rows_[static_cast<size_t>(i)].manifold)];
+    const bool aStatic = context.bodies[static_cast<size_t>(manifold.bodyA)].isStatic();
+    const int body = root(aStatic ? manifold.bodyB : manifold.bodyA);
+    int& island = islandOfRoot[static_cast<size_t>(body)];
+    if (island < 0) {
+      island = static_cast<int>(islands_.size());
+      islands_.emplace_back();
+    }
+    for (int v = 0; v < kVariablesPerPoint; ++v) {
+      islands_[static_cast<size_t>(island)].push_back(kVariablesPerPoint * i + v);
+    }
+  }
+}
+
+// One LCP per island (the islands do not couple: the matrix is block diagonal in them).
+LcpSolution ReferenceSolver::solveLcp() const {
+  LcpSolution all;
+  all.z = Eigen::VectorXd::Zero(lcpVector_.size());
+  for (const std::vector<int>& island : islands_) {
+    const LcpSolution part = solveIsland(lcpMatrix_(island, island), lcpVector_(island));
+    all.pivots += part.pivots;
+    if (!part.solved) {
+      all.failure = part.failure;
+      return all;
+    }
+    all.z(island) = part.z;
+  }
+  all.w = lcpMatrix_ * all.z + lcpVector_;
+  all.solved = true;
+  return all;
+}
+
 // Lemke on the problem as stated; on a ray (degeneracy defeating the floating-point
 // lexicographic rule) once more on a slightly perturbed q.
-LcpSolution ReferenceSolver::solveLcp() const {
+LcpSolution ReferenceSolver::solveIsland(const Eigen::MatrixXd& matrix,
+                                         const Eigen::VectorXd& vector) const {
   const LemkeSettings& options = settings_.lemke;
-  const LcpSolution solution = solveLemke(lcpMatrix_, lcpVector_, options);
-  if (solution.solved || lcpVector_.size() == 0) return solution;
-  const int size = static_cast<int>(lcpVector_.size());
+  const LcpSolution solution = solveLemke(matrix, vector, options);
+  if (solution.solved || vector.size() == 0) return solution;
+  const int size = static_cast<int>(vector.size());
   const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
-  const double scale = settings_.degeneracyPerturbation * lcpVector_.cwiseAbs().maxCoeff();
-  LcpSolution retry = solveLemke(lcpMatrix_, lcpVector_ + scale * growing, options);
+  const double scale = settings_.degeneracyPerturbation * vector.cwiseAbs().maxCoeff();
+  LcpSolution retry = solveLemke(matrix, vector + scale * growing, options);
   retry.pivots += solution.pivots;
   if (!retry.solved) retry.failure = solution.failure + "; perturbed retry: " + retry.failure;
   return retry;
@@ -193,8 +266,24 @@ double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
                                     row.friction, 1.0 / delassus_(2 * i, 2 * i),
                                     1.0 / delassus_(2 * i + 1, 2 * i + 1)));
   }
-  const double largest = impulses.cwiseAbs().maxCoeff();
-  return largest > 0.0 ? worst / largest : worst;
+  const double scale = impulseScale(impulses);
+  return scale > 0.0 ? worst / scale : worst;
+}
+
+// N s. The size of the step's impulses, so that the residual is relative to something that
+// cannot vanish when the answer does (a corner touching down, an elastic row that has already
+// separated, where every impulse is 0 and rounding is all that is left): the largest impulse, each
+// point's cancelling impulses (what stops its normal and tangent motion alone, velocity over
+// effective mass) and the momenta of the bodies in contact (m|v|, and I|ω| over the point's lever
+// arm).
+double ReferenceSolver::impulseScale(const Eigen::VectorXd& impulses) const {
+  double scale = impulses.cwiseAbs().maxCoeff();
+  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+    scale = std::max({scale, std::abs(lcpVector_(kVariablesPerPoint * i)) / delassus_(2 * i, 2 * i),
+                      std::abs(freeVelocity_(2 * i + 1)) / delassus_(2 * i + 1, 2 * i + 1),
+                      rows_[static_cast<size_t>(i)].momentum});
+  }
+  return scale;
 }
 
 void ReferenceSolver::applyImpulses(const StepContext& context,

@@ -10,6 +10,8 @@
 // rows too (Stewart–Trinkle): vt + β ⟂ λt⁺, −vt + β ⟂ λt⁻, μλn − λt⁺ − λt⁻ ⟂ β.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Dense>
 
 #include "impulse2d/solver.h"
@@ -29,8 +31,16 @@ class ReferenceSolver : public ContactSolver {
   /// The same position pass as sequential impulses (position_correction.h).
   void solvePositions(const StepContext& context) override;
   /// iterations: Lemke pivots; residual: the worst violated condition in N s, relative to the
-  /// largest impulse.
+  /// step's impulse scale (the largest of the impulses, each point's cancelling impulses and the
+  /// momenta of the bodies in contact).
   SolveReport lastReport() const override { return report_; }
+
+  /// The step's exact impulses (λn, λt) per point, interleaved in the order of the manifolds and
+  /// their points, without applying them; throws like solveVelocities. Empty when nothing touches.
+  Eigen::VectorXd exactImpulses(const StepContext& context);
+  /// The worst violated physical condition of `impulses` (same layout) on the last solve's
+  /// problem, relative to its impulse scale: what lastReport().residual is for the exact answer.
+  double residual(const Eigen::VectorXd& impulses) const;
 
   /// The Delassus matrix of the last solve: rows/columns 2i (normal) and 2i+1 (tangent) of point
   /// i, in the order of the manifolds and their points; entry (r, c) is the relative velocity
@@ -46,15 +56,18 @@ class ReferenceSolver : public ContactSolver {
     int point = 0;
     double friction = 0.0;
     double targetNormalVelocity = 0.0;
+    double momentum = 0.0;  ///< N s, the larger of its two bodies' momenta seen from the point
   };
 
   void collectPoints(const StepContext& context);
   void buildDelassus(const StepContext& context);
   void buildFreeVelocity(const StepContext& context);
   void formulateLcp();
+  void groupIslands(const StepContext& context);
   LcpSolution solveLcp() const;
+  LcpSolution solveIsland(const Eigen::MatrixXd& matrix, const Eigen::VectorXd& vector) const;
   Eigen::VectorXd contactImpulses(const Eigen::VectorXd& lcpSolution) const;
-  double residual(const Eigen::VectorXd& impulses) const;
+  double impulseScale(const Eigen::VectorXd& impulses) const;
   void applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) const;
   void fail(const std::string& reason);
 
@@ -64,6 +77,8 @@ class ReferenceSolver : public ContactSolver {
   Eigen::VectorXd freeVelocity_;  ///< 2p: (vn, vt) of each point before the solve
   Eigen::MatrixXd lcpMatrix_;     ///< 4p × 4p, variables (λn, λt⁺, λt⁻, β) per point
   Eigen::VectorXd lcpVector_;     ///< 4p
+  /// The LCP variables of each island: points joined through dynamic bodies.
+  std::vector<std::vector<int>> islands_;
   SolveReport report_;
 };
 

@@ -1,0 +1,96 @@
+// `i2d run SCENE --error-vs-reference FILE`: the scene's method watched by the global reference;
+// per step the relative impulse error and the worst violation go to FILE, a summary to stdout.
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "failures.h"
+#include "impulse2d/box2d/box2d_simulation.h"
+#include "impulse2d/solvers/error_vs_reference.h"
+#include "impulse2d/world.h"
+#include "scene_setup.h"
+
+namespace i2d {
+namespace {
+
+using impulse2d::ReferenceError;
+
+/// Writes FILE.tmp, then renames it: FILE appears only when complete.
+/// One row per velocity solve (substeps solve several times a step), at the solve's time.
+void writeErrors(const std::string& path, const std::vector<ReferenceError>& errors,
+                 double solveDt) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << "solve,t,points,impulse_error,velocity_error,violation\n";
+    for (const ReferenceError& error : errors) {
+      out << error.step + 1 << ',' << double(error.step + 1) * solveDt << ',' << error.points << ','
+          << error.impulseError << ',' << error.velocityError << ',' << error.violation << '\n';
+    }
+    if (!out.flush()) {
+      std::remove(temporary.c_str());
+      throw RunFailure("cannot write " + temporary + ": " + std::strerror(errno));
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    throw RunFailure("cannot write " + path + ": " + std::strerror(errno));
+  }
+}
+
+/// "median M, mean A, largest L" of the finite values (the steps with contact impulses).
+std::string statistics(std::vector<double> values) {
+  values.erase(std::remove_if(values.begin(), values.end(),
+                              [](double value) { return !std::isfinite(value); }),
+               values.end());
+  if (values.empty()) return "no steps with contact impulses";
+  std::sort(values.begin(), values.end());
+  double sum = 0.0;
+  for (double value : values) sum += value;
+  std::ostringstream text;
+  text << "median " << values[values.size() / 2] << ", mean " << sum / double(values.size())
+       << ", largest " << values.back() << " over " << values.size() << " solves";
+  return text.str();
+}
+
+void printErrorSummary(const std::vector<ReferenceError>& errors) {
+  std::vector<double> impulse, velocity, violation;
+  for (const ReferenceError& error : errors) {
+    impulse.push_back(error.impulseError);
+    velocity.push_back(error.velocityError);
+    violation.push_back(error.violation);
+  }
+  std::cout << "impulse err  " << statistics(impulse) << "  (|λ - λ*| / |λ*|)\n"
+            << "velocity err " << statistics(velocity) << "  (the same in the energy norm)\n"
+            << "violation    " << statistics(violation) << "  (relative to the impulse scale)\n";
+}
+
+}  // namespace
+
+int errorVsReferenceRun(const RunOptions& options) {
+  const impulse2d::SceneFile scene = loadScene(options.scene);
+  if (scene.solver == impulse2d::kBox2dName) {
+    throw RunFailure("--error-vs-reference measures micro, sequential or reference, not box2d");
+  }
+  auto solver = impulse2d::makeWatchedSolver(scene.solver, scene.solverSettings);
+  const impulse2d::ErrorVsReference& watched = *solver;  // the world will own it
+  impulse2d::World world(scene.world, std::move(solver));
+  for (const impulse2d::Body& body : impulse2d::buildBodies(scene)) world.addBody(body);
+  for (int step = 0; step < scene.steps; ++step) world.step();
+  writeErrors(*options.errorVsReferencePath, watched.errors(),
+              world.settings().dt / world.settings().substeps);
+  std::cout << "scene        " << scene.name << " (solver " << scene.solver
+            << ", watched by the reference)\nsteps        " << scene.steps << "\n";
+  printErrorSummary(watched.errors());
+  std::cout << "errors       " << *options.errorVsReferencePath << "\n";
+  return kSuccess;
+}
+
+}  // namespace i2d

@@ -1,0 +1,145 @@
+// Convergence against the exact answer (issue 14): on one settled step of each scene, the error of
+// sequential impulses after k = 1…64 sweeps, from a cold and from a warm start, and of the
+// micro-collision resolver after k impulses per contact point (its sweep equivalent), each
+// against the global reference's exact answer of the same pre-solve state.
+//
+//   error_vs_iterations OUTDIR     writes OUTDIR/error_vs_iterations.dat (error_vs_iterations.gp
+//                                  draws it) and prints the table as Markdown
+//
+// The reference must solve the probed step: stack10, stack20 and pyramid5 fit its dense Lemke;
+// pyramid8's probed step ends Lemke on a secondary ray (printed, not measured); pyramid20 (1,180
+// points) and rain do not fit (docs/global-reference.md, "What it costs") and are not tried.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "impulse2d/solvers/error_vs_reference.h"
+#include "impulse2d/solvers/micro_collision.h"
+#include "impulse2d/solvers/sequential_impulses.h"
+#include "impulse2d/world.h"
+#include "measures/benchmark_scenes.h"
+
+using namespace impulse2d;
+using namespace benchmarks;
+
+namespace {
+
+const std::vector<int> kIterations = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64};
+
+/// One method configuration probed at k iterations.
+struct Variant {
+  std::string label;  ///< as the .dat file and the chart name it
+  std::string method;
+  bool warm;
+};
+
+const std::vector<Variant> kVariants = {{"sequential_cold", "sequential", false},
+                                        {"sequential_warm", "sequential", true},
+                                        {"micro", "micro", true}};
+
+std::unique_ptr<ContactSolver> solverAt(const Variant& variant, int k, SolverSettings settings) {
+  settings.sequential.velocityIterations = k;
+  settings.sequential.warmStarting = variant.warm;
+  settings.micro.velocityIterationsPerContact = k;
+  return makeSolver(variant.method, settings);
+}
+
+/// The scene's settled pre-solve state, caught as the running solver is handed it.
+class StateCatcher : public ContactSolver {
+ public:
+  StateCatcher(std::unique_ptr<ContactSolver> running, long probe)
+      : running_(std::move(running)), probe_(probe) {}
+  std::string name() const override { return running_->name(); }
+  void solveVelocities(const StepContext& context) override {
+    if (solves_++ == probe_) {
+      bodies_ = context.bodies;
+      manifolds_ = context.manifolds;
+      dt_ = context.dt;
+    }
+    running_->solveVelocities(context);
+  }
+  void solvePositions(const StepContext& context) override { running_->solvePositions(context); }
+
+  std::vector<Body> bodies_;
+  std::vector<Manifold> manifolds_;
+  double dt_ = 0.0;
+
+ private:
+  std::unique_ptr<ContactSolver> running_;
+  long probe_;
+  long solves_ = 0;
+};
+
+/// Writes one row per variant and k for the scene; the state is caught running sequential
+/// impulses at their defaults (warm impulses on the manifolds).
+void probeScene(const Scene& scene, std::ofstream& data) {
+  const long probe = static_cast<long>(settledTime(scene) / scene.world.dt + 0.5);
+  auto catcher =
+      std::make_unique<StateCatcher>(makeSolver("sequential", scene.solverSettings), probe);
+  StateCatcher& state = *catcher;
+  World world(scene.world, std::move(catcher));
+  for (const Body& body : buildBodies(scene)) world.addBody(body);
+  for (long step = 0; step <= probe; ++step) world.step();
+  int points = 0;
+  for (const Manifold& manifold : state.manifolds_) points += manifold.pointCount;
+  std::printf("\n%s: step %ld, %d contact points\n\n| k |", scene.name.c_str(), probe, points);
+  for (const Variant& variant : kVariants) std::printf(" %s |", variant.label.c_str());
+  std::printf("\n|---|---|---|---|\n");
+  std::vector<std::vector<double>> table(kIterations.size());
+  for (const Variant& variant : kVariants) {
+    std::vector<Body> bodies = state.bodies_;
+    std::vector<Manifold> manifolds = state.manifolds_;
+    ReferenceSolver reference(referenceSettingsFor(variant.method, scene.solverSettings));
+    const Eigen::VectorXd exact = reference.exactImpulses({bodies, manifolds, state.dt_});
+    for (size_t i = 0; i < kIterations.size(); ++i) {
+      bodies = state.bodies_;
+      manifolds = state.manifolds_;
+      solverAt(variant, kIterations[i], scene.solverSettings)
+          ->solveVelocities({bodies, manifolds, state.dt_});
+      const Eigen::VectorXd impulses = appliedImpulses(manifolds);
+      const double error = relativeImpulseError(impulses, exact);
+      const double velocity = energyNormError(impulses, exact, reference.delassusMatrix());
+      data << scene.name << ' ' << variant.label << ' ' << kIterations[i] << ' ' << error << ' '
+           << velocity << ' ' << reference.residual(impulses) << '\n';
+      table[i].push_back(error);
+    }
+  }
+  for (size_t i = 0; i < kIterations.size(); ++i) {
+    std::printf("| %d |", kIterations[i]);
+    for (double error : table[i]) std::printf(" %.3g |", error);
+    std::printf("\n");
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: error_vs_iterations OUTDIR\n");
+    return 2;
+  }
+  const std::string path = std::string(argv[1]) + "/error_vs_iterations.dat";
+  std::ofstream data(path);
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  data << "# scene variant k impulse_error velocity_error violation\n";
+  std::printf(
+      "Relative impulse error |λ − λ*|/|λ*| after k iterations (k impulses per point for "
+      "micro)\n");
+  for (const Scene& scene :
+       {shippedScene("stack10"), shippedScene("stack20"), pyramidScene(5), pyramidScene(8)}) {
+    try {
+      probeScene(scene, data);
+    } catch (const std::runtime_error& failure) {
+      std::printf("\n%s: not measured: %s\n", scene.name.c_str(), failure.what());
+    }
+  }
+  if (!data.flush()) {
+    std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
+    return 1;
+  }
+  std::printf("\nwrote %s\n", path.c_str());
+  return 0;
+}

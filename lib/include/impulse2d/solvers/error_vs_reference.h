@@ -1,0 +1,76 @@
+// Each method's error against the exact answer of the same step. A method's solver is wrapped:
+// at every step the global reference (reference_solver.h) first solves a copy of the method's
+// pre-solve state exactly, then the method solves the real one, and the two answers are compared
+// point by point. The method's run is unchanged; the reference only watches.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "impulse2d/solver.h"
+#include "impulse2d/solvers/reference_solver.h"
+
+namespace impulse2d {
+
+/// One step's figures. Both are 0 for the exact answer.
+struct ReferenceError {
+  long step = 0;   ///< 0-based solve count (one per substep)
+  int points = 0;  ///< contact points solved
+  /// ‖λ − λ*‖ / ‖λ*‖ over every point's (λn, λt); NaN when nothing touches or λ* = 0.
+  double impulseError = 0.0;
+  /// The same in the energy norm, sqrt(dᵀW d / λ*ᵀW λ*) with d = λ − λ* and W the Delassus
+  /// matrix: the error of the velocity changes the impulses cause. A flat contact's two corners
+  /// can share a load in many ways that all cause the same velocities (a stack is statically
+  /// indeterminate); this measure does not see those differences, the impulse error does.
+  double velocityError = 0.0;
+  /// The worst violated condition of the method's impulses on the same problem (penetrating
+  /// velocity, friction outside the cone, friction short of the limit or pushing along while
+  /// sliding), in N s relative to the step's impulse scale: the reference's own residual measure.
+  double violation = 0.0;
+};
+
+/// ‖λ − λ*‖ / ‖λ*‖; NaN when ‖λ*‖ = 0 (no exact impulse to be relative to).
+double relativeImpulseError(const Eigen::VectorXd& impulses, const Eigen::VectorXd& exact);
+
+/// sqrt(dᵀW d / λ*ᵀW λ*), d = λ − λ*; NaN when λ*ᵀW λ* = 0.
+double energyNormError(const Eigen::VectorXd& impulses, const Eigen::VectorXd& exact,
+                       const Eigen::MatrixXd& delassus);
+
+/// The impulses (λn, λt) the solver left on the points, in the reference's order.
+Eigen::VectorXd appliedImpulses(const std::vector<Manifold>& manifolds);
+
+/// The reference settings that pose the method's own problem: the method's bias and bounce
+/// targets (sequential: its ContactTargetSettings; micro: no bias, its bounce limit), the rest
+/// from settings.reference.
+ReferenceSolverSettings referenceSettingsFor(const std::string& method,
+                                             const SolverSettings& settings);
+
+/// `method` (a solver name) wrapped so the reference watches it.
+class ErrorVsReference;
+std::unique_ptr<ErrorVsReference> makeWatchedSolver(const std::string& method,
+                                                    const SolverSettings& settings);
+
+class ErrorVsReference : public ContactSolver {
+ public:
+  ErrorVsReference(std::unique_ptr<ContactSolver> method, const ReferenceSolverSettings& reference)
+      : method_(std::move(method)), reference_(reference) {}
+
+  std::string name() const override { return method_->name(); }
+  /// Solves a copy of the pre-solve state exactly, then lets the method solve, then compares.
+  void solveVelocities(const StepContext& context) override;
+  void solvePositions(const StepContext& context) override { method_->solvePositions(context); }
+  SolveReport lastReport() const override { return method_->lastReport(); }
+
+  /// One entry per velocity solve so far.
+  const std::vector<ReferenceError>& errors() const { return errors_; }
+  ContactSolver& method() { return *method_; }
+
+ private:
+  std::unique_ptr<ContactSolver> method_;
+  ReferenceSolver reference_;
+  std::vector<ReferenceError> errors_;
+};
+
+}  // namespace impulse2d

@@ -1,0 +1,76 @@
+// The reference watching a method: the exact answer of the method's own pre-solve state, then the
+// method's answer, then the two compared.
+#include "impulse2d/solvers/error_vs_reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace impulse2d {
+
+double relativeImpulseError(const Eigen::VectorXd& impulses, const Eigen::VectorXd& exact) {
+  const double size = exact.norm();
+  if (!(size > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return (impulses - exact).norm() / size;
+}
+
+double energyNormError(const Eigen::VectorXd& impulses, const Eigen::VectorXd& exact,
+                       const Eigen::MatrixXd& delassus) {
+  const double size = exact.dot(delassus * exact);
+  if (!(size > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::VectorXd difference = impulses - exact;
+  return std::sqrt(std::max(0.0, difference.dot(delassus * difference)) / size);
+}
+
+Eigen::VectorXd appliedImpulses(const std::vector<Manifold>& manifolds) {
+  int count = 0;
+  for (const Manifold& manifold : manifolds) count += manifold.pointCount;
+  Eigen::VectorXd impulses(2 * count);
+  int row = 0;
+  for (const Manifold& manifold : manifolds) {
+    for (int i = 0; i < manifold.pointCount; ++i, row += 2) {
+      impulses(row) = manifold.points[static_cast<size_t>(i)].normalImpulse;
+      impulses(row + 1) = manifold.points[static_cast<size_t>(i)].tangentImpulse;
+    }
+  }
+  return impulses;
+}
+
+ReferenceSolverSettings referenceSettingsFor(const std::string& method,
+                                             const SolverSettings& settings) {
+  ReferenceSolverSettings reference = settings.reference;
+  if (method == "sequential") reference.targets = settings.sequential.targets;
+  if (method == "micro") {
+    reference.targets.penetrationBias = false;
+    reference.targets.restitutionVelocityThreshold = settings.micro.restitutionVelocityLimit;
+  }
+  return reference;
+}
+
+std::unique_ptr<ErrorVsReference> makeWatchedSolver(const std::string& method,
+                                                    const SolverSettings& settings) {
+  return std::make_unique<ErrorVsReference>(makeSolver(method, settings),
+                                            referenceSettingsFor(method, settings));
+}
+
+void ErrorVsReference::solveVelocities(const StepContext& context) {
+  std::vector<Body> bodies = context.bodies;
+  std::vector<Manifold> manifolds = context.manifolds;
+  const Eigen::VectorXd exact = reference_.exactImpulses({bodies, manifolds, context.dt});
+  method_->solveVelocities(context);
+  ReferenceError error;
+  error.step = static_cast<long>(errors_.size());
+  error.points = static_cast<int>(exact.size() / 2);
+  if (exact.size() == 0) {
+    error.impulseError = std::numeric_limits<double>::quiet_NaN();
+    error.velocityError = error.impulseError;
+  } else {
+    const Eigen::VectorXd impulses = appliedImpulses(context.manifolds);
+    error.impulseError = relativeImpulseError(impulses, exact);
+    error.velocityError = energyNormError(impulses, exact, reference_.delassusMatrix());
+    error.violation = reference_.residual(impulses);
+  }
+  errors_.push_back(error);
+}
+
+}  // namespace impulse2d

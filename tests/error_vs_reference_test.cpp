@@ -1,0 +1,81 @@
+// Each method's error against the exact answer of the same step: zero for the reference itself,
+// a perturbed answer flagged, sequential impulses' error falling with its sweeps.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "impulse2d/solvers/error_vs_reference.h"
+#include "impulse2d/world.h"
+#include "solver_scenes.h"
+
+using namespace impulse2d;
+using namespace solvers;
+
+namespace {
+
+/// A world running `scene`'s solver watched by the reference.
+std::unique_ptr<World> watchedWorld(const Scene& scene) {
+  auto world =
+      std::make_unique<World>(scene.world, makeWatchedSolver(scene.solver, scene.solverSettings));
+  for (const Body& body : buildBodies(scene)) world->addBody(body);
+  return world;
+}
+
+const std::vector<ReferenceError>& errorsOf(World& world) {
+  return dynamic_cast<ErrorVsReference&>(world.solver()).errors();
+}
+
+/// The sequential solver's impulse error in the last of `steps` steps of a resting 10-stack.
+double sequentialError(int iterations, int steps) {
+  Scene scene = stackScene("sequential", 10, 0.6);
+  scene.solverSettings.sequential.velocityIterations = iterations;
+  auto world = watchedWorld(scene);
+  runSteps(*world, steps);
+  return errorsOf(*world).back().impulseError;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "on a resting 10-stack the reference's own error is 0 and its violation within its "
+    "tolerance",
+    "[error_vs_reference]") {
+  auto world = watchedWorld(stackScene("reference", 10, 0.6));
+  runSteps(*world, 60);
+  REQUIRE(errorsOf(*world).size() == 60);
+  for (const ReferenceError& error : errorsOf(*world)) {
+    INFO("step " << error.step);
+    REQUIRE(error.points == 20);
+    CHECK(error.impulseError <= 1e-12);  // the same LCP solved twice, by the same pivots
+    CHECK(error.velocityError <= 1e-12);
+    CHECK(error.violation <= ReferenceSolverSettings{}.residualTolerance);
+  }
+}
+
+TEST_CASE("an answer 1% off at one point is measured as such and flagged as a violation",
+          "[error_vs_reference]") {
+  auto world = buildWorld(stackScene("reference", 10, 0.6));
+  runSteps(*world, 10);
+  ReferenceSolver& reference = dynamic_cast<ReferenceSolver&>(world->solver());
+  const Eigen::VectorXd exact = appliedImpulses(world->manifolds());
+  Eigen::VectorXd perturbed = exact;
+  perturbed(0) *= 1.01;  // the bottom contact pushes 1% too hard: the stack lifts off
+  CHECK(relativeImpulseError(exact, exact) == 0.0);
+  CHECK(relativeImpulseError(perturbed, exact) ==
+        Approx(0.01 * std::abs(exact(0)) / exact.norm()).epsilon(1e-9));
+  CHECK(reference.residual(exact) <= ReferenceSolverSettings{}.residualTolerance);
+  CHECK(reference.residual(perturbed) > 1e-4);
+  CHECK(energyNormError(perturbed, exact, reference.delassusMatrix()) > 1e-3);
+}
+
+TEST_CASE("sequential impulses' error on a resting 10-stack falls with its sweeps",
+          "[error_vs_reference][sequential]") {
+  double previous = 2.0;
+  for (int iterations : {1, 4, 16, 64}) {
+    const double error = sequentialError(iterations, 30);
+    INFO(iterations << " sweeps: error " << error);
+    CHECK(error < previous);
+    previous = error;
+  }
+  CHECK(previous < 0.05);
+}
