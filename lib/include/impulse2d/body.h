@@ -82,6 +82,13 @@ struct Body {
 
   /// Recomputes the cached rotation and bounds after position or angle changed.
   void updateCache();
+  /// Recomputes only the cached rotation (one sine and cosine); the bounds wait for updateCache.
+  void updateRotation() { rotation = impulse2d::rotation(angle); }
+  /// Turns the body by a small angle without trigonometry, as the position pass does many times a
+  /// step: (cos, sin) moves along its tangent by `angleChange` and is put back on the unit circle
+  /// (Box2D v3's b2IntegrateRotation; exact to angleChange³/3). The bounds are left for the
+  /// world's updateCache after the pass.
+  void turnBy(double angleChange);
 
   double kineticEnergy() const;
   /// Potential energy in the gravity field g: −m g·x.

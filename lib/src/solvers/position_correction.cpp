@@ -12,12 +12,12 @@ namespace impulse2d {
 namespace {
 
 /// Moves a body as a positional "impulse" P at world point `where` would: x += P/m,
-/// θ += (r × P)/I.
+/// θ += (r × P)/I. The rotation follows without trigonometry; the bounds are the world's to
+/// refresh after the pass.
 void moveBody(Body& body, const Vec2& push, const Vec2& where) {
   if (body.isStatic()) return;
   body.position += body.inverseMass * push;
-  body.angle += body.inverseInertia * cross(Vec2(where - body.position), push);
-  body.updateCache();
+  body.turnBy(body.inverseInertia * cross(Vec2(where - body.position), push));
 }
 
 /// How hard the pass corrects: the solver's settings, gathered once per pass.

@@ -10,7 +10,11 @@ bool isWellConditioned(const Mat2& k, double conditionLimit) {
 }
 
 Vec2 solveTwoPointLcp(const Mat2& k, const Vec2& q) {
-  const Vec2 both = -(inverseOrZero(k, 0.0) * q);
+  return solveTwoPointLcp(k, inverseOrZero(k, 0.0), q);
+}
+
+Vec2 solveTwoPointLcp(const Mat2& k, const Mat2& kInverse, const Vec2& q) {
+  const Vec2 both = -(kInverse * q);
   if (both.minCoeff() >= 0.0) return both;
   const Vec2 firstOnly(-q(0) / k(0, 0), 0.0);
   if (firstOnly(0) >= 0.0 && k(1, 0) * firstOnly(0) + q(1) >= 0.0) return firstOnly;

@@ -16,4 +16,8 @@ bool isWellConditioned(const Mat2& k, double conditionLimit);
 /// only the second, neither — as Box2D 2.4's block solver does. K must be well conditioned.
 Vec2 solveTwoPointLcp(const Mat2& k, const Vec2& q);
 
+/// The same with K⁻¹ (inverseOrZero(k, 0)) computed once by the caller, for a K that stays the
+/// same over many solves (the velocity sweeps of one step).
+Vec2 solveTwoPointLcp(const Mat2& k, const Mat2& kInverse, const Vec2& q);
+
 }  // namespace impulse2d
