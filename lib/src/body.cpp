@@ -14,8 +14,8 @@ void Body::turnBy(double angleChange) {
   angle += angleChange;
   const double c = rotation(0, 0) - angleChange * rotation(1, 0);
   const double s = rotation(1, 0) + angleChange * rotation(0, 0);
-  const double length = std::sqrt(c * c + s * s);
-  rotation << c / length, -s / length, s / length, c / length;
+  const double inverseLength = 1.0 / std::sqrt(c * c + s * s);
+  rotation << c * inverseLength, -s * inverseLength, s * inverseLength, c * inverseLength;
 }
 
 double Body::kineticEnergy() const {

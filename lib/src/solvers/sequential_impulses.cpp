@@ -169,28 +169,6 @@ double SequentialImpulseSolver::solveFriction(const ManifoldState& manifold, Poi
   return impulse;
 }
 
-/// The relative velocity (B's material minus A's) at the point, along `direction`.
-double SequentialImpulseSolver::relativeVelocity(const ManifoldState& manifold,
-                                                 const PointState& point,
-                                                 const Vec2& direction) const {
-  const SolverBody& a = solverBodies_[static_cast<size_t>(manifold.bodyA)];
-  const SolverBody& b = solverBodies_[static_cast<size_t>(manifold.bodyB)];
-  const Vec2 velocityB = b.velocity + cross(b.angularVelocity, point.armB);
-  const Vec2 velocityA = a.velocity + cross(a.angularVelocity, point.armA);
-  return (velocityB - velocityA).dot(direction);
-}
-
-/// +P to B, −P to A at the point: Δv = P/m, Δω = (r × P)/I.
-void SequentialImpulseSolver::applyImpulse(const ManifoldState& manifold, const PointState& point,
-                                           const Vec2& impulse) {
-  SolverBody& a = solverBodies_[static_cast<size_t>(manifold.bodyA)];
-  SolverBody& b = solverBodies_[static_cast<size_t>(manifold.bodyB)];
-  a.velocity -= a.inverseMass * impulse;
-  a.angularVelocity -= a.inverseInertia * cross(point.armA, impulse);
-  b.velocity += b.inverseMass * impulse;
-  b.angularVelocity += b.inverseInertia * cross(point.armB, impulse);
-}
-
 // Accumulated impulses: the running total may only push (≥ 0); what is applied is the change of
 // the total, so a later sweep can take back part of an earlier push. Without accumulation each
 // impulse is clamped on its own and can never be taken back.

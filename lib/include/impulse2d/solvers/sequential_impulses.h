@@ -80,9 +80,24 @@ class SequentialImpulseSolver : public ContactSolver {
   void solveNormalsTogether(const ManifoldState& manifold, std::array<PointImpulse, 2>& impulses);
   double solveFriction(const ManifoldState& manifold, PointState& point,
                        double normalImpulseThisSweep);
+  /// The relative velocity (B's material minus A's) at the point, along `direction`.
   double relativeVelocity(const ManifoldState& manifold, const PointState& point,
-                          const Vec2& direction) const;
-  void applyImpulse(const ManifoldState& manifold, const PointState& point, const Vec2& impulse);
+                          const Vec2& direction) const {
+    const SolverBody& a = solverBodies_[static_cast<size_t>(manifold.bodyA)];
+    const SolverBody& b = solverBodies_[static_cast<size_t>(manifold.bodyB)];
+    const Vec2 velocityB = b.velocity + cross(b.angularVelocity, point.armB);
+    const Vec2 velocityA = a.velocity + cross(a.angularVelocity, point.armA);
+    return (velocityB - velocityA).dot(direction);
+  }
+  /// +P to B, −P to A at the point: Δv = P/m, Δω = (r × P)/I.
+  void applyImpulse(const ManifoldState& manifold, const PointState& point, const Vec2& impulse) {
+    SolverBody& a = solverBodies_[static_cast<size_t>(manifold.bodyA)];
+    SolverBody& b = solverBodies_[static_cast<size_t>(manifold.bodyB)];
+    a.velocity -= a.inverseMass * impulse;
+    a.angularVelocity -= a.inverseInertia * cross(point.armA, impulse);
+    b.velocity += b.inverseMass * impulse;
+    b.angularVelocity += b.inverseInertia * cross(point.armB, impulse);
+  }
   double normalImpulseChange(PointState& point, double impulse) const;
   double tangentImpulseChange(PointState& point, double impulse, double friction,
                               double normalImpulseThisSweep) const;
