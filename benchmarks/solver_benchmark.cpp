@@ -6,7 +6,8 @@
 //
 //   solver_benchmark             the full tables (a few minutes)
 //   solver_benchmark --quick     every table on shortened runs, in seconds (a smoke test)
-//   solver_benchmark --speed     issue 15's table only: sequential impulses at 8+3 and at their
+//   solver_benchmark --speed [SCENE...]  issue 15's table only: sequential impulses at 8+3 and at
+//   their
 //                                defaults against Box2D 8+3 on pyramid20, pyramid40, rain and
 //                                stack20, time ratios (medians, same run) and accuracy
 //   solver_benchmark --callgrind SCENE SOLVER ITERATIONS WARMUP STEPS
@@ -200,7 +201,7 @@ void printSpeedRow(const std::string& sceneName, const std::vector<RunFigures>& 
 
 /// Issue 15: sequential impulses against Box2D 2.4.1 in one alternating run per scene.
 /// Instructions per step come from the --callgrind mode (docs/sequential-impulses.md).
-void printSpeedTable() {
+void printSpeedTable(const std::vector<std::string>& sceneNames) {
   const std::vector<MethodRun> methods = {kStackMethods[0], kStackMethods[1], kStackMethods[2]};
   std::printf("\n### Sequential impulses against Box2D 2.4.1 (medians, same run)\n\n");
   std::printf(
@@ -208,7 +209,7 @@ void printSpeedTable() {
       "(≤ %.1f×) | settled drift m (Box2D / 8+3 / defaults) | largest penetration m | stack "
       "force error |\n| --- | --- | --- | --- | --- | --- | --- |\n",
       kSpeedTargetAtBox2dIterations, kSpeedTargetAtDefaults);
-  for (const std::string sceneName : {"pyramid20", "pyramid40", "rain", "stack20"}) {
+  for (const std::string& sceneName : sceneNames) {
     const Scene scene = shippedScene(sceneName);
     printSpeedRow(sceneName, measure(scene, methods, Length{}));
   }
@@ -235,12 +236,15 @@ int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   if (mode == "--callgrind" && argc == 7) return callgrindRun(argv + 2);
   if (mode == "--speed") {
-    printSpeedTable();
+    const std::vector<std::string> only(argv + 2, argv + argc);
+    printSpeedTable(only.empty()
+                        ? std::vector<std::string>{"pyramid20", "pyramid40", "rain", "stack20"}
+                        : only);
     return 0;
   }
   if (!mode.empty() && mode != "--quick") {
     std::fprintf(stderr,
-                 "usage: solver_benchmark [--quick | --speed | --callgrind SCENE SOLVER "
+                 "usage: solver_benchmark [--quick | --speed [SCENE...] | --callgrind SCENE SOLVER "
                  "ITERATIONS WARMUP STEPS]\n");
     return 2;
   }

@@ -1,21 +1,11 @@
 // Rigid body construction and the energy of one body.
 #include "impulse2d/body.h"
 
-#include <cmath>
-
 namespace impulse2d {
 
 void Body::updateCache() {
   rotation = impulse2d::rotation(angle);
   bounds = computeBounds(shape, position, rotation);
-}
-
-void Body::turnBy(double angleChange) {
-  angle += angleChange;
-  const double c = rotation(0, 0) - angleChange * rotation(1, 0);
-  const double s = rotation(1, 0) + angleChange * rotation(0, 0);
-  const double inverseLength = 1.0 / std::sqrt(c * c + s * s);
-  rotation << c * inverseLength, -s * inverseLength, s * inverseLength, c * inverseLength;
 }
 
 double Body::kineticEnergy() const {
