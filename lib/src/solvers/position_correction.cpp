@@ -80,10 +80,11 @@ bool correctTogether(const StepContext& context, int manifoldIndex, const Correc
   Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
   const std::array<CurrentPoint, 2> points{currentPoint(a, b, manifold, 0),
                                            currentPoint(a, b, manifold, 1)};
-  const Mat2 k = normalCouplingMatrix(a, b, manifold.normal, points[0].where, points[1].where);
-  if (!isWellConditioned(k, correction.block.conditionLimit)) return false;
   const Vec2 wanted(wantedRemoval(points[0].penetration, correction),
                     wantedRemoval(points[1].penetration, correction));
+  if (wanted(0) <= 0.0 && wanted(1) <= 0.0) return true;  // both within the slop: nothing to do
+  const Mat2 k = normalCouplingMatrix(a, b, manifold.normal, points[0].where, points[1].where);
+  if (!isWellConditioned(k, correction.block.conditionLimit)) return false;
   const Vec2 pushes = solveTwoPointLcp(k, -wanted);
   const Vec2 removed = k * pushes;
   for (int i = 0; i < 2; ++i) {
