@@ -125,7 +125,7 @@ double SequentialImpulseSolver::solveManifold(const StepContext& context,
 
 // The text's step: the relative normal velocity, the change wanted to reach the target, and the
 // impulse = normal mass × that change (clamped as accumulation says).
-SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNormal(
+inline SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNormal(
     const ManifoldState& manifold, PointState& point) {
   const double relativeNormalVelocity = relativeVelocity(manifold, point, manifold.normal);
   PointImpulse impulse;
@@ -137,8 +137,8 @@ SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNormal(
 
 // Both points of a flat contact at once: the new totals x solve the 2×2 complementarity problem
 // K x + q ≥ 0 ⟂ x ≥ 0, with q the velocity error the totals would leave if they were zero.
-void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& manifold,
-                                                   std::array<PointImpulse, 2>& impulses) {
+inline void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& manifold,
+                                                          std::array<PointImpulse, 2>& impulses) {
   PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
   Vec2 totals;
   Vec2 velocityError;
@@ -159,8 +159,9 @@ void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& manifold
 
 // Friction the same way along the tangent: the impulse that stops the sliding, within Coulomb's
 // limit. Returns the friction impulse applied.
-double SequentialImpulseSolver::solveFriction(const ManifoldState& manifold, PointState& point,
-                                              double normalImpulseThisSweep) {
+inline double SequentialImpulseSolver::solveFriction(const ManifoldState& manifold,
+                                                     PointState& point,
+                                                     double normalImpulseThisSweep) {
   const Vec2 tangent = leftPerpendicular(manifold.normal);
   const double relativeTangentVelocity = relativeVelocity(manifold, point, tangent);
   const double impulse = tangentImpulseChange(point, -point.tangentMass * relativeTangentVelocity,
@@ -172,7 +173,8 @@ double SequentialImpulseSolver::solveFriction(const ManifoldState& manifold, Poi
 // Accumulated impulses: the running total may only push (≥ 0); what is applied is the change of
 // the total, so a later sweep can take back part of an earlier push. Without accumulation each
 // impulse is clamped on its own and can never be taken back.
-double SequentialImpulseSolver::normalImpulseChange(PointState& point, double impulse) const {
+inline double SequentialImpulseSolver::normalImpulseChange(PointState& point,
+                                                           double impulse) const {
   const double before = point.normalImpulse;
   if (settings_.accumulateImpulses) {
     point.normalImpulse = std::max(before + impulse, 0.0);
@@ -184,9 +186,9 @@ double SequentialImpulseSolver::normalImpulseChange(PointState& point, double im
 
 // Coulomb's limit: the running friction total stays within ±μ × the running normal total; without
 // accumulation each friction impulse is capped at μ × this sweep's normal impulse (the text's cap).
-double SequentialImpulseSolver::tangentImpulseChange(PointState& point, double impulse,
-                                                     double friction,
-                                                     double normalImpulseThisSweep) const {
+inline double SequentialImpulseSolver::tangentImpulseChange(PointState& point, double impulse,
+                                                            double friction,
+                                                            double normalImpulseThisSweep) const {
   const double before = point.tangentImpulse;
   if (settings_.accumulateImpulses) {
     const double limit = friction * point.normalImpulse;
