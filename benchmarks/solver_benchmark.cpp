@@ -6,6 +6,10 @@
 //
 //   solver_benchmark             the full tables (a few minutes)
 //   solver_benchmark --quick     every table on shortened runs, in seconds (a smoke test)
+//   solver_benchmark --speed [SCENE...]  issue 15's table only: sequential impulses at 8+3 and at
+//   their
+//                                defaults against Box2D 8+3 on pyramid20, pyramid40, rain and
+//                                stack20, time ratios (medians, same run) and accuracy
 //   solver_benchmark --callgrind SCENE SOLVER ITERATIONS WARMUP STEPS
 //                                runs WARMUP steps of the shipped SCENE with SOLVER at ITERATIONS
 //                                (0: its default), then STEPS steps inside measuredSteps(), for
@@ -176,6 +180,41 @@ void printAnalyticTable(const std::vector<std::string>& solvers) {
   std::printf("\n");
 }
 
+/// Issue 15's targets: time per step / Box2D's at 8+3 iterations, and at the defaults.
+constexpr double kSpeedTargetAtBox2dIterations = 0.8;
+constexpr double kSpeedTargetAtDefaults = 1.0;
+
+/// One scene's row of the speed table: Box2D 8+3, sequential 8+3, sequential at its defaults.
+void printSpeedRow(const std::string& sceneName, const std::vector<RunFigures>& f) {
+  const double atBox2dIterations = f[1].medianMicroseconds / f[0].medianMicroseconds;
+  const double atDefaults = f[2].medianMicroseconds / f[0].medianMicroseconds;
+  std::printf("| %s | %.0f | %.2f× (%s) | %.2f× (%s) | %.2e / %.2e / %.2e | %.2e / %.2e / %.2e |",
+              sceneName.c_str(), f[0].medianMicroseconds, atBox2dIterations,
+              atBox2dIterations <= kSpeedTargetAtBox2dIterations ? "met" : "not met", atDefaults,
+              atDefaults <= kSpeedTargetAtDefaults ? "met" : "not met", f[0].drift, f[1].drift,
+              f[2].drift, f[0].largestPenetration, f[1].largestPenetration,
+              f[2].largestPenetration);
+  std::printf(" %s / %s / %s |\n", cell(f[0].stackForceError, "%.2e").c_str(),
+              cell(f[1].stackForceError, "%.2e").c_str(),
+              cell(f[2].stackForceError, "%.2e").c_str());
+}
+
+/// Issue 15: sequential impulses against Box2D 2.4.1 in one alternating run per scene.
+/// Instructions per step come from the --callgrind mode (docs/sequential-impulses.md).
+void printSpeedTable(const std::vector<std::string>& sceneNames) {
+  const std::vector<MethodRun> methods = {kStackMethods[0], kStackMethods[1], kStackMethods[2]};
+  std::printf("\n### Sequential impulses against Box2D 2.4.1 (medians, same run)\n\n");
+  std::printf(
+      "| scene | Box2D 8+3 µs | sequential 8+3 / Box2D (≤ %.1f×) | sequential defaults / Box2D "
+      "(≤ %.1f×) | settled drift m (Box2D / 8+3 / defaults) | largest penetration m | stack "
+      "force error |\n| --- | --- | --- | --- | --- | --- | --- |\n",
+      kSpeedTargetAtBox2dIterations, kSpeedTargetAtDefaults);
+  for (const std::string& sceneName : sceneNames) {
+    const Scene scene = shippedScene(sceneName);
+    printSpeedRow(sceneName, measure(scene, methods, Length{}));
+  }
+}
+
 /// Kept out of line so callgrind can count exactly these steps (--toggle-collect).
 __attribute__((noinline)) void measuredSteps(Simulation& simulation, long steps) {
   for (long i = 0; i < steps; ++i) simulation.step();
@@ -196,10 +235,17 @@ int callgrindRun(char** arguments) {
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   if (mode == "--callgrind" && argc == 7) return callgrindRun(argv + 2);
+  if (mode == "--speed") {
+    const std::vector<std::string> only(argv + 2, argv + argc);
+    printSpeedTable(only.empty()
+                        ? std::vector<std::string>{"pyramid20", "pyramid40", "rain", "stack20"}
+                        : only);
+    return 0;
+  }
   if (!mode.empty() && mode != "--quick") {
     std::fprintf(stderr,
-                 "usage: solver_benchmark [--quick | --callgrind SCENE SOLVER ITERATIONS WARMUP "
-                 "STEPS]\n");
+                 "usage: solver_benchmark [--quick | --speed [SCENE...] | --callgrind SCENE SOLVER "
+                 "ITERATIONS WARMUP STEPS]\n");
     return 2;
   }
   const Length length{mode == "--quick"};

@@ -75,6 +75,7 @@ void World::substep(double h) {
   solver_->solveVelocities(context);
   integratePositions(h);
   solver_->solvePositions(context);
+  refreshCaches();
   storeSolvedManifolds();
   putRestingIslandsToSleep(h);
 }
@@ -263,7 +264,15 @@ void World::integratePositions(double h) {
     if (!body.isAwake()) continue;
     body.position += h * body.velocity;
     body.angle += h * body.angularVelocity;
-    body.updateCache();
+    body.updateRotation();
+  }
+}
+
+// Once per substep, after the position pass: the rotation exact from the angle again, and the
+// bounds the next broad phase sweeps with (the solvers move bodies without updating them).
+void World::refreshCaches() {
+  for (Body& body : bodies_) {
+    if (body.isAwake()) body.updateCache();
   }
 }
 

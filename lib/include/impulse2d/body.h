@@ -1,6 +1,7 @@
 // Rigid bodies: mass from shape and density, state, and the forces accumulated for one step.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "impulse2d/math.h"
@@ -82,6 +83,19 @@ struct Body {
 
   /// Recomputes the cached rotation and bounds after position or angle changed.
   void updateCache();
+  /// Recomputes only the cached rotation (one sine and cosine); the bounds wait for updateCache.
+  void updateRotation() { rotation = impulse2d::rotation(angle); }
+  /// Turns the body by a small angle without trigonometry, as the position pass does many times a
+  /// step: (cos, sin) moves along its tangent by `angleChange` and is put back on the unit circle
+  /// (Box2D v3's b2IntegrateRotation; exact to angleChange³/3). The bounds are left for the
+  /// world's updateCache after the pass.
+  void turnBy(double angleChange) {
+    angle += angleChange;
+    const double c = rotation(0, 0) - angleChange * rotation(1, 0);
+    const double s = rotation(1, 0) + angleChange * rotation(0, 0);
+    const double inverseLength = 1.0 / std::sqrt(c * c + s * s);
+    rotation << c * inverseLength, -s * inverseLength, s * inverseLength, c * inverseLength;
+  }
 
   double kineticEnergy() const;
   /// Potential energy in the gravity field g: −m g·x.

@@ -14,9 +14,11 @@
 //                          is kept in Body::lastAcceleration; forces and torques are cleared.
 //   5. solveVelocities     the solver's contact impulses act on the new velocities; it is given
 //                          only the manifolds with an awake body.
-//   6. integratePositions  awake bodies: x += v·h, θ += ω·h, with the velocities after impulses.
+//   6. integratePositions  awake bodies: x += v·h, θ += ω·h, with the velocities after impulses;
+//                          the rotation is updated, the bounds wait for step 8.
 //   7. solvePositions      the solver removes what penetration remains.
-//   8. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
+//   8. refreshCaches       awake bodies: rotation from the angle and bounds, once per substep.
+//   9. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
 //                          thresholds for timeToSleep sleeps; its velocities become zero.
 #pragma once
 
@@ -88,6 +90,7 @@ class World : public Simulation {
   std::vector<Manifold>& manifoldsToSolve();
   void storeSolvedManifolds();
   void integratePositions(double h);
+  void refreshCaches();
   void putRestingIslandsToSleep(double h);
   void updateSleepTime(Body& body, double h) const;
 

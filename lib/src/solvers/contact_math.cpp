@@ -9,27 +9,6 @@
 
 namespace impulse2d {
 
-double velocityPerUnitImpulse(const Body& body, const Vec2& impulsePoint,
-                              const Vec2& impulseDirection, const Vec2& measurePoint,
-                              const Vec2& measureDirection) {
-  const Vec2 impulseArm = impulsePoint - body.position;
-  const Vec2 measureArm = measurePoint - body.position;
-  return body.inverseMass * impulseDirection.dot(measureDirection) +
-         body.inverseInertia * cross(impulseArm, impulseDirection) *
-             cross(measureArm, measureDirection);
-}
-
-double pairVelocityPerUnitImpulse(const Body& a, const Body& b, const Vec2& impulsePoint,
-                                  const Vec2& impulseDirection, const Vec2& measurePoint,
-                                  const Vec2& measureDirection) {
-  return velocityPerUnitImpulse(a, impulsePoint, impulseDirection, measurePoint, measureDirection) +
-         velocityPerUnitImpulse(b, impulsePoint, impulseDirection, measurePoint, measureDirection);
-}
-
-double unitImpulseResponse(const Body& a, const Body& b, const Vec2& point, const Vec2& direction) {
-  return pairVelocityPerUnitImpulse(a, b, point, direction, point, direction);
-}
-
 Mat2 contactMatrix(const Body& a, const Body& b, const Vec2& point, const Vec2& normal) {
   const Vec2 tangent = leftPerpendicular(normal);
   const double coupling = pairVelocityPerUnitImpulse(a, b, point, tangent, point, normal);
@@ -37,15 +16,6 @@ Mat2 contactMatrix(const Body& a, const Body& b, const Vec2& point, const Vec2& 
   matrix << unitImpulseResponse(a, b, point, normal), coupling, coupling,
       unitImpulseResponse(a, b, point, tangent);
   return matrix;
-}
-
-Mat2 normalCouplingMatrix(const Body& a, const Body& b, const Vec2& normal, const Vec2& point0,
-                          const Vec2& point1) {
-  const double coupling = pairVelocityPerUnitImpulse(a, b, point0, normal, point1, normal);
-  Mat2 k;
-  k << unitImpulseResponse(a, b, point0, normal), coupling, coupling,
-      unitImpulseResponse(a, b, point1, normal);
-  return k;
 }
 
 Mat2 couplingBlock(const std::vector<Body>& bodies, const Manifold& mi, const Vec2& pi,
@@ -71,10 +41,6 @@ Mat2 couplingBlock(const std::vector<Body>& bodies, const Manifold& mi, const Ve
   return block;
 }
 
-double relativeVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& direction) {
-  return (b.velocityAt(point) - a.velocityAt(point)).dot(direction);
-}
-
 Vec2 contactVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& normal) {
   const Vec2 relative = b.velocityAt(point) - a.velocityAt(point);
   return Vec2(relative.dot(normal), relative.dot(leftPerpendicular(normal)));
@@ -86,15 +52,6 @@ void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, in
   const Vec2& where = manifold.points[static_cast<size_t>(point)].point;
   bodies[static_cast<size_t>(manifold.bodyA)].applyImpulse(-impulse, where);
   bodies[static_cast<size_t>(manifold.bodyB)].applyImpulse(impulse, where);
-}
-
-Vec2 currentContactPoint(const Body& a, const Body& b, const ContactPoint& point) {
-  return 0.5 * (a.toWorld(point.anchorA) + b.toWorld(point.anchorB));
-}
-
-double currentPenetration(const Body& a, const Body& b, const Manifold& manifold, int point) {
-  const ContactPoint& contact = manifold.points[static_cast<size_t>(point)];
-  return (a.toWorld(contact.anchorA) - b.toWorld(contact.anchorB)).dot(manifold.normal);
 }
 
 double targetSeparatingVelocity(double normalVelocityBefore, double penetration, double restitution,

@@ -12,12 +12,12 @@ namespace impulse2d {
 namespace {
 
 /// Moves a body as a positional "impulse" P at world point `where` would: x += P/m,
-/// θ += (r × P)/I.
+/// θ += (r × P)/I. The rotation follows without trigonometry; the bounds are the world's to
+/// refresh after the pass.
 void moveBody(Body& body, const Vec2& push, const Vec2& where) {
   if (body.isStatic()) return;
   body.position += body.inverseMass * push;
-  body.angle += body.inverseInertia * cross(Vec2(where - body.position), push);
-  body.updateCache();
+  body.turnBy(body.inverseInertia * cross(Vec2(where - body.position), push));
 }
 
 /// How hard the pass corrects: the solver's settings, gathered once per pass.
@@ -27,11 +27,25 @@ struct Correction {
   const BlockSolveSettings& block;
 };
 
+/// A manifold's point at the bodies' current poses: where it is (midway between the surface
+/// anchors, as currentContactPoint) and how deep (as currentPenetration), from one transform of
+/// each anchor.
+struct CurrentPoint {
+  Vec2 where;
+  double penetration;
+};
+
+CurrentPoint currentPoint(const Body& a, const Body& b, const Manifold& manifold, int index) {
+  const ContactPoint& point = manifold.points[static_cast<size_t>(index)];
+  const Vec2 anchorA = a.toWorld(point.anchorA);
+  const Vec2 anchorB = b.toWorld(point.anchorB);
+  return {0.5 * (anchorA + anchorB), (anchorA - anchorB).dot(manifold.normal)};
+}
+
 /// What one sweep should remove at a point: a fraction of the penetration beyond the slop,
 /// capped; ≤ 0 when there is nothing to remove.
-double wantedRemoval(const Body& a, const Body& b, const Manifold& manifold, int point,
-                     const Correction& correction) {
-  const double excess = currentPenetration(a, b, manifold, point) - correction.allowedPenetration;
+double wantedRemoval(double penetration, const Correction& correction) {
+  const double excess = penetration - correction.allowedPenetration;
   return std::min(correction.pass.correctionFactor * excess, correction.pass.maxCorrection);
 }
 
@@ -46,12 +60,13 @@ void correctPoint(const StepContext& context, int manifoldIndex, int index,
   const Manifold& manifold = context.manifolds[static_cast<size_t>(manifoldIndex)];
   Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
   Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
-  const double removed = wantedRemoval(a, b, manifold, index, correction);
+  const CurrentPoint point = currentPoint(a, b, manifold, index);
+  const double removed = wantedRemoval(point.penetration, correction);
   if (removed <= 0.0) return;
-  const Vec2 where = currentContactPoint(a, b, manifold.points[static_cast<size_t>(index)]);
-  const Vec2 push = (removed / unitImpulseResponse(a, b, where, manifold.normal)) * manifold.normal;
-  moveBody(a, -push, where);
-  moveBody(b, push, where);
+  const Vec2 push =
+      (removed / unitImpulseResponse(a, b, point.where, manifold.normal)) * manifold.normal;
+  moveBody(a, -push, point.where);
+  moveBody(b, push, point.where);
   report(context, sweep, manifoldIndex, index, removed);
 }
 
@@ -63,17 +78,18 @@ bool correctTogether(const StepContext& context, int manifoldIndex, const Correc
   const Manifold& manifold = context.manifolds[static_cast<size_t>(manifoldIndex)];
   Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
   Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
-  const std::array<Vec2, 2> where{currentContactPoint(a, b, manifold.points[0]),
-                                  currentContactPoint(a, b, manifold.points[1])};
-  const Mat2 k = normalCouplingMatrix(a, b, manifold.normal, where[0], where[1]);
+  const std::array<CurrentPoint, 2> points{currentPoint(a, b, manifold, 0),
+                                           currentPoint(a, b, manifold, 1)};
+  const Vec2 wanted(wantedRemoval(points[0].penetration, correction),
+                    wantedRemoval(points[1].penetration, correction));
+  if (wanted(0) <= 0.0 && wanted(1) <= 0.0) return true;  // both within the slop: nothing to do
+  const Mat2 k = normalCouplingMatrix(a, b, manifold.normal, points[0].where, points[1].where);
   if (!isWellConditioned(k, correction.block.conditionLimit)) return false;
-  const Vec2 wanted(wantedRemoval(a, b, manifold, 0, correction),
-                    wantedRemoval(a, b, manifold, 1, correction));
   const Vec2 pushes = solveTwoPointLcp(k, -wanted);
   const Vec2 removed = k * pushes;
   for (int i = 0; i < 2; ++i) {
-    moveBody(a, -pushes(i) * manifold.normal, where[static_cast<size_t>(i)]);
-    moveBody(b, pushes(i) * manifold.normal, where[static_cast<size_t>(i)]);
+    moveBody(a, -pushes(i) * manifold.normal, points[static_cast<size_t>(i)].where);
+    moveBody(b, pushes(i) * manifold.normal, points[static_cast<size_t>(i)].where);
     report(context, sweep, manifoldIndex, i, removed(i));
   }
   return true;

@@ -1,5 +1,5 @@
-// Sequential impulses: PreStep (masses, targets, warm start), then sweeps that solve one contact
-// at a time — normal impulses, then friction — clamping the accumulated totals.
+// Sequential impulses: PreStep (arms, masses, targets, warm start), then sweeps that solve one
+// contact at a time — normal impulses, then friction — clamping the accumulated totals.
 #include "impulse2d/solvers/sequential_impulses.h"
 
 #include <algorithm>
@@ -13,7 +13,7 @@ namespace impulse2d {
 
 void SequentialImpulseSolver::solveVelocities(const StepContext& context) {
   prepare(context);
-  warmStart(context);
+  warmStart();
   report_ = SolveReport{};
   for (int sweep = 0; sweep < settings_.velocityIterations; ++sweep) {
     report_.residual = 0.0;
@@ -22,41 +22,60 @@ void SequentialImpulseSolver::solveVelocities(const StepContext& context) {
     }
     report_.iterations = sweep + 1;
   }
-  updateFrictionStates(context);
+  storeResults(context);
 }
 
 // PreStep: the masses from the unit-impulse response, and the target separating velocity from the
 // closing velocity before any impulse of this step (so warm starting does not hide a bounce).
 void SequentialImpulseSolver::prepare(const StepContext& context) {
+  prepareBodies(context);
   states_.clear();
   manifoldStates_.clear();
+  const bool warm = settings_.warmStarting && settings_.accumulateImpulses;
   for (size_t m = 0; m < context.manifolds.size(); ++m) {
     const Manifold& manifold = context.manifolds[m];
-    const Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
-    const Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
-    addManifoldState(context, static_cast<int>(m), static_cast<int>(states_.size()));
+    Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
+    Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+    a.wake();  // a contact's impulses wake its bodies, as Body::applyImpulse does
+    b.wake();
+    addManifoldState(context, static_cast<int>(m));
     for (int i = 0; i < manifold.pointCount; ++i) {
       const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
       PointState state;
-      state.manifold = static_cast<int>(m);
-      state.point = i;
+      state.armA = point.point - a.position;
+      state.armB = point.point - b.position;
       state.normalMass = 1.0 / unitImpulseResponse(a, b, point.point, manifold.normal);
       state.tangentMass = 1.0 / unitImpulseResponse(a, b, point.point, manifold.tangent());
-      const double normalVelocity = relativeVelocity(a, b, point.point, manifold.normal);
+      const double normalVelocity = impulse2d::relativeVelocity(a, b, point.point, manifold.normal);
       state.targetNormalVelocity = targetSeparatingVelocity(
           normalVelocity, point.penetration, manifold.restitution, context.dt, settings_.targets);
+      state.normalImpulse = warm ? point.normalImpulse : 0.0;
+      state.tangentImpulse = warm ? point.tangentImpulse : 0.0;
       states_.push_back(state);
     }
   }
 }
 
+// The solver bodies: copies of what the sweeps touch, one per body (static ones have zero
+// inverse mass and inertia, so impulses leave them still).
+void SequentialImpulseSolver::prepareBodies(const StepContext& context) {
+  solverBodies_.resize(context.bodies.size());
+  for (size_t i = 0; i < context.bodies.size(); ++i) {
+    const Body& body = context.bodies[i];
+    solverBodies_[i] = {body.velocity, body.angularVelocity, body.inverseMass, body.inverseInertia};
+  }
+}
+
 // The block solve needs running totals to clamp, so it goes with accumulated impulses.
-void SequentialImpulseSolver::addManifoldState(const StepContext& context, int manifold,
-                                               int firstPoint) {
+void SequentialImpulseSolver::addManifoldState(const StepContext& context, int manifold) {
   const Manifold& contact = context.manifolds[static_cast<size_t>(manifold)];
   ManifoldState state;
   state.manifold = manifold;
-  state.firstPoint = firstPoint;
+  state.bodyA = contact.bodyA;
+  state.bodyB = contact.bodyB;
+  state.normal = contact.normal;
+  state.friction = contact.friction;
+  state.firstPoint = static_cast<int>(states_.size());
   state.pointCount = contact.pointCount;
   if (settings_.block.enabled && settings_.accumulateImpulses && contact.pointCount == 2) {
     state.normalCoupling =
@@ -64,112 +83,98 @@ void SequentialImpulseSolver::addManifoldState(const StepContext& context, int m
                              context.bodies[static_cast<size_t>(contact.bodyB)], contact.normal,
                              contact.points[0].point, contact.points[1].point);
     state.block = isWellConditioned(state.normalCoupling, settings_.block.conditionLimit);
+    state.inverseCoupling = inverseOrZero(state.normalCoupling, 0.0);
   }
   manifoldStates_.push_back(state);
 }
 
 // Warm starting: the last step's totals (carried over by feature id) are applied up front, so the
-// sweeps only correct what changed. Without it the totals start from zero.
-void SequentialImpulseSolver::warmStart(const StepContext& context) const {
-  const bool warm = settings_.warmStarting && settings_.accumulateImpulses;
-  for (const PointState& state : states_) {
-    Manifold& manifold = context.manifolds[static_cast<size_t>(state.manifold)];
-    ContactPoint& point = manifold.points[static_cast<size_t>(state.point)];
-    if (!warm) {
-      point.normalImpulse = 0.0;
-      point.tangentImpulse = 0.0;
-      continue;
+// sweeps only correct what changed. Without it the totals start from zero (set in prepare).
+void SequentialImpulseSolver::warmStart() {
+  if (!settings_.warmStarting || !settings_.accumulateImpulses) return;
+  for (const ManifoldState& manifold : manifoldStates_) {
+    const Vec2 tangent = leftPerpendicular(manifold.normal);
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      const PointState& point = states_[static_cast<size_t>(manifold.firstPoint + i)];
+      applyImpulse(manifold, point,
+                   point.normalImpulse * manifold.normal + point.tangentImpulse * tangent);
     }
-    applyContactImpulse(context.bodies, manifold, state.point, point.normalImpulse,
-                        point.tangentImpulse);
   }
 }
 
 // One contact in one sweep: the normal impulses of its points (together, or one at a time), then
 // friction at each point. Returns the largest |normal impulse change|, the sweep's residual.
 double SequentialImpulseSolver::solveManifold(const StepContext& context,
-                                              const ManifoldState& manifold, int sweep) const {
+                                              const ManifoldState& manifold, int sweep) {
   std::array<PointImpulse, 2> impulses;
-  const auto stateOf = [&](int i) -> const PointState& {
-    return states_[static_cast<size_t>(manifold.firstPoint + i)];
-  };
+  PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
   if (manifold.block) {
-    solveNormalsTogether(context, manifold, impulses);
+    solveNormalsTogether(manifold, impulses);
   } else {
-    for (int i = 0; i < manifold.pointCount; ++i) impulses[i] = solveNormal(context, stateOf(i));
+    for (int i = 0; i < manifold.pointCount; ++i) impulses[i] = solveNormal(manifold, points[i]);
   }
   double largestChange = 0.0;
   for (int i = 0; i < manifold.pointCount; ++i) {
     PointImpulse& impulse = impulses[static_cast<size_t>(i)];
-    impulse.tangentImpulse = solveFriction(context, stateOf(i), impulse.normalImpulse);
+    impulse.tangentImpulse = solveFriction(manifold, points[i], impulse.normalImpulse);
     largestChange = std::max(largestChange, std::abs(impulse.normalImpulse));
-    context.report({SolverEvent::Phase::Velocity, sweep, manifold.manifold, i,
-                    impulse.desiredChange, impulse.normalImpulse, impulse.tangentImpulse});
+    reportPoint(context, manifold, sweep, i, impulse);
   }
   return largestChange;
 }
 
 // The text's step: the relative normal velocity, the change wanted to reach the target, and the
 // impulse = normal mass × that change (clamped as accumulation says).
-SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNormal(
-    const StepContext& context, const PointState& state) const {
-  Manifold& manifold = context.manifolds[static_cast<size_t>(state.manifold)];
-  ContactPoint& point = manifold.points[static_cast<size_t>(state.point)];
-  const double relativeNormalVelocity = relativeVelocity(
-      context.bodies[static_cast<size_t>(manifold.bodyA)],
-      context.bodies[static_cast<size_t>(manifold.bodyB)], point.point, manifold.normal);
+inline SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNormal(
+    const ManifoldState& manifold, PointState& point) {
+  const double relativeNormalVelocity = relativeVelocity(manifold, point, manifold.normal);
   PointImpulse impulse;
-  impulse.desiredChange = state.targetNormalVelocity - relativeNormalVelocity;
-  impulse.normalImpulse = normalImpulseChange(point, state.normalMass * impulse.desiredChange);
-  applyContactImpulse(context.bodies, manifold, state.point, impulse.normalImpulse, 0.0);
+  impulse.desiredChange = point.targetNormalVelocity - relativeNormalVelocity;
+  impulse.normalImpulse = normalImpulseChange(point, point.normalMass * impulse.desiredChange);
+  applyImpulse(manifold, point, impulse.normalImpulse * manifold.normal);
   return impulse;
 }
 
 // Both points of a flat contact at once: the new totals x solve the 2×2 complementarity problem
 // K x + q ≥ 0 ⟂ x ≥ 0, with q the velocity error the totals would leave if they were zero.
-void SequentialImpulseSolver::solveNormalsTogether(const StepContext& context,
-                                                   const ManifoldState& state,
-                                                   std::array<PointImpulse, 2>& impulses) const {
-  Manifold& manifold = context.manifolds[static_cast<size_t>(state.manifold)];
-  const Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
-  const Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+inline void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& manifold,
+                                                          std::array<PointImpulse, 2>& impulses) {
+  PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
   Vec2 totals;
   Vec2 velocityError;
   for (int i = 0; i < 2; ++i) {
-    const PointState& point = states_[static_cast<size_t>(state.firstPoint + i)];
-    const Vec2& where = manifold.points[static_cast<size_t>(i)].point;
-    totals(i) = manifold.points[static_cast<size_t>(i)].normalImpulse;
-    velocityError(i) = relativeVelocity(a, b, where, manifold.normal) - point.targetNormalVelocity;
+    totals(i) = points[i].normalImpulse;
+    velocityError(i) =
+        relativeVelocity(manifold, points[i], manifold.normal) - points[i].targetNormalVelocity;
     impulses[static_cast<size_t>(i)].desiredChange = -velocityError(i);
   }
-  const Vec2 newTotals =
-      solveTwoPointLcp(state.normalCoupling, velocityError - state.normalCoupling * totals);
+  const Vec2 newTotals = solveTwoPointLcp(manifold.normalCoupling, manifold.inverseCoupling,
+                                          velocityError - manifold.normalCoupling * totals);
   for (int i = 0; i < 2; ++i) {
     impulses[static_cast<size_t>(i)].normalImpulse = newTotals(i) - totals(i);
-    manifold.points[static_cast<size_t>(i)].normalImpulse = newTotals(i);
-    applyContactImpulse(context.bodies, manifold, i, newTotals(i) - totals(i), 0.0);
+    points[i].normalImpulse = newTotals(i);
+    applyImpulse(manifold, points[i], (newTotals(i) - totals(i)) * manifold.normal);
   }
 }
 
 // Friction the same way along the tangent: the impulse that stops the sliding, within Coulomb's
 // limit. Returns the friction impulse applied.
-double SequentialImpulseSolver::solveFriction(const StepContext& context, const PointState& state,
-                                              double normalImpulseThisSweep) const {
-  Manifold& manifold = context.manifolds[static_cast<size_t>(state.manifold)];
-  ContactPoint& point = manifold.points[static_cast<size_t>(state.point)];
-  const double relativeTangentVelocity = relativeVelocity(
-      context.bodies[static_cast<size_t>(manifold.bodyA)],
-      context.bodies[static_cast<size_t>(manifold.bodyB)], point.point, manifold.tangent());
-  const double impulse = tangentImpulseChange(point, -state.tangentMass * relativeTangentVelocity,
+inline double SequentialImpulseSolver::solveFriction(const ManifoldState& manifold,
+                                                     PointState& point,
+                                                     double normalImpulseThisSweep) {
+  const Vec2 tangent = leftPerpendicular(manifold.normal);
+  const double relativeTangentVelocity = relativeVelocity(manifold, point, tangent);
+  const double impulse = tangentImpulseChange(point, -point.tangentMass * relativeTangentVelocity,
                                               manifold.friction, normalImpulseThisSweep);
-  applyContactImpulse(context.bodies, manifold, state.point, 0.0, impulse);
+  applyImpulse(manifold, point, impulse * tangent);
   return impulse;
 }
 
 // Accumulated impulses: the running total may only push (≥ 0); what is applied is the change of
 // the total, so a later sweep can take back part of an earlier push. Without accumulation each
 // impulse is clamped on its own and can never be taken back.
-double SequentialImpulseSolver::normalImpulseChange(ContactPoint& point, double impulse) const {
+inline double SequentialImpulseSolver::normalImpulseChange(PointState& point,
+                                                           double impulse) const {
   const double before = point.normalImpulse;
   if (settings_.accumulateImpulses) {
     point.normalImpulse = std::max(before + impulse, 0.0);
@@ -181,9 +186,9 @@ double SequentialImpulseSolver::normalImpulseChange(ContactPoint& point, double 
 
 // Coulomb's limit: the running friction total stays within ±μ × the running normal total; without
 // accumulation each friction impulse is capped at μ × this sweep's normal impulse (the text's cap).
-double SequentialImpulseSolver::tangentImpulseChange(ContactPoint& point, double impulse,
-                                                     double friction,
-                                                     double normalImpulseThisSweep) const {
+inline double SequentialImpulseSolver::tangentImpulseChange(PointState& point, double impulse,
+                                                            double friction,
+                                                            double normalImpulseThisSweep) const {
   const double before = point.tangentImpulse;
   if (settings_.accumulateImpulses) {
     const double limit = friction * point.normalImpulse;
@@ -195,13 +200,36 @@ double SequentialImpulseSolver::tangentImpulseChange(ContactPoint& point, double
   return point.tangentImpulse - before;
 }
 
-void SequentialImpulseSolver::updateFrictionStates(const StepContext& context) const {
-  for (const PointState& state : states_) {
-    Manifold& manifold = context.manifolds[static_cast<size_t>(state.manifold)];
-    ContactPoint& point = manifold.points[static_cast<size_t>(state.point)];
-    point.friction =
-        frictionStateOf(point.normalImpulse, point.tangentImpulse, manifold.friction, 0.0);
+// The sweeps' results back where the world keeps them: velocities on the bodies, the totals (the
+// next step's warm start) and the friction state on the manifolds' points.
+void SequentialImpulseSolver::storeResults(const StepContext& context) const {
+  for (size_t i = 0; i < context.bodies.size(); ++i) {
+    Body& body = context.bodies[i];
+    if (body.isStatic()) continue;
+    body.velocity = solverBodies_[i].velocity;
+    body.angularVelocity = solverBodies_[i].angularVelocity;
   }
+  for (const ManifoldState& state : manifoldStates_) {
+    Manifold& manifold = context.manifolds[static_cast<size_t>(state.manifold)];
+    for (int i = 0; i < state.pointCount; ++i) {
+      const PointState& solved = states_[static_cast<size_t>(state.firstPoint + i)];
+      ContactPoint& point = manifold.points[static_cast<size_t>(i)];
+      point.normalImpulse = solved.normalImpulse;
+      point.tangentImpulse = solved.tangentImpulse;
+      point.friction =
+          frictionStateOf(point.normalImpulse, point.tangentImpulse, manifold.friction, 0.0);
+    }
+  }
+}
+
+// A traced step shows the bodies and manifolds as they are after each point's solve, so the
+// results are stored before each report; an untraced step stores them once, after the sweeps.
+void SequentialImpulseSolver::reportPoint(const StepContext& context, const ManifoldState& manifold,
+                                          int sweep, int point, const PointImpulse& impulse) const {
+  if (context.observer == nullptr) return;
+  storeResults(context);
+  context.report({SolverEvent::Phase::Velocity, sweep, manifold.manifold, point,
+                  impulse.desiredChange, impulse.normalImpulse, impulse.tangentImpulse});
 }
 
 void SequentialImpulseSolver::solvePositions(const StepContext& context) {

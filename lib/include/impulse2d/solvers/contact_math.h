@@ -19,21 +19,33 @@ namespace impulse2d {
 /// along `impulseDirection` at `impulsePoint` causes: d·d'/m + (r×d)(r'×d')/I. The building block
 /// of the unit-impulse probe (one point), the lecture's contact matrix (one point, two
 /// directions) and the reference's Delassus matrix (two points).
-double velocityPerUnitImpulse(const Body& body, const Vec2& impulsePoint,
-                              const Vec2& impulseDirection, const Vec2& measurePoint,
-                              const Vec2& measureDirection);
+inline double velocityPerUnitImpulse(const Body& body, const Vec2& impulsePoint,
+                                     const Vec2& impulseDirection, const Vec2& measurePoint,
+                                     const Vec2& measureDirection) {
+  const Vec2 impulseArm = impulsePoint - body.position;
+  const Vec2 measureArm = measurePoint - body.position;
+  return body.inverseMass * impulseDirection.dot(measureDirection) +
+         body.inverseInertia * cross(impulseArm, impulseDirection) *
+             cross(measureArm, measureDirection);
+}
 
 /// The two-body form: how the relative velocity of point i along direction i (B's material minus
 /// A's) changes per unit impulse along direction j at point j of the same pair (+ on B, − on A).
-double pairVelocityPerUnitImpulse(const Body& a, const Body& b, const Vec2& impulsePoint,
-                                  const Vec2& impulseDirection, const Vec2& measurePoint,
-                                  const Vec2& measureDirection);
+inline double pairVelocityPerUnitImpulse(const Body& a, const Body& b, const Vec2& impulsePoint,
+                                         const Vec2& impulseDirection, const Vec2& measurePoint,
+                                         const Vec2& measureDirection) {
+  return velocityPerUnitImpulse(a, impulsePoint, impulseDirection, measurePoint, measureDirection) +
+         velocityPerUnitImpulse(b, impulsePoint, impulseDirection, measurePoint, measureDirection);
+}
 
 /// The text's unit-impulse probe in closed form: how much the relative velocity along `direction`
 /// at `point` changes when an impulse of 1 N s acts there (+direction on B, −direction on A):
 /// 1/m_A + 1/m_B + (r_A×d)²/I_A + (r_B×d)²/I_B. Its inverse is the impulse per unit of velocity
 /// change: the normal (or tangent) mass.
-double unitImpulseResponse(const Body& a, const Body& b, const Vec2& point, const Vec2& direction);
+inline double unitImpulseResponse(const Body& a, const Body& b, const Vec2& point,
+                                  const Vec2& direction) {
+  return pairVelocityPerUnitImpulse(a, b, point, direction, point, direction);
+}
 
 /// The lecture's contact matrix of one point: the velocity change (normal, tangent) that a unit
 /// impulse (normal, tangent) causes, summed over both bodies. Row and column 0 are the normal,
@@ -43,8 +55,14 @@ Mat2 contactMatrix(const Body& a, const Body& b, const Vec2& point, const Vec2& 
 /// The normal coupling matrix K of two points of one manifold: entry (i, j) is the change of
 /// point i's normal velocity per unit normal impulse at point j. Symmetric; its diagonal is the
 /// unit-impulse response of each point.
-Mat2 normalCouplingMatrix(const Body& a, const Body& b, const Vec2& normal, const Vec2& point0,
-                          const Vec2& point1);
+inline Mat2 normalCouplingMatrix(const Body& a, const Body& b, const Vec2& normal,
+                                 const Vec2& point0, const Vec2& point1) {
+  const double coupling = pairVelocityPerUnitImpulse(a, b, point0, normal, point1, normal);
+  Mat2 k;
+  k << unitImpulseResponse(a, b, point0, normal), coupling, coupling,
+      unitImpulseResponse(a, b, point1, normal);
+  return k;
+}
 
 /// The 2×2 block of the Delassus matrix between point i of manifold mi and point j of manifold
 /// mj: how j's impulses (columns: normal, tangent) change i's relative velocities (rows: normal,
@@ -57,7 +75,10 @@ Mat2 couplingBlock(const std::vector<Body>& bodies, const Manifold& mi, const Ve
 
 /// The relative velocity (B's material minus A's) at `point`, along `direction`: vn on the
 /// normal (< 0 closing), vt on the tangent.
-double relativeVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& direction);
+inline double relativeVelocity(const Body& a, const Body& b, const Vec2& point,
+                               const Vec2& direction) {
+  return (b.velocityAt(point) - a.velocityAt(point)).dot(direction);
+}
 
 /// The relative velocity of B against A at a world point in contact coordinates:
 /// (normal, tangent), i.e. (vn, vt).
@@ -70,11 +91,17 @@ void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, in
 // ---- where a contact is now ----
 
 /// The manifold's point midway between the two surface anchors at the bodies' current poses.
-Vec2 currentContactPoint(const Body& a, const Body& b, const ContactPoint& point);
+inline Vec2 currentContactPoint(const Body& a, const Body& b, const ContactPoint& point) {
+  return 0.5 * (a.toWorld(point.anchorA) + b.toWorld(point.anchorB));
+}
 
 /// The penetration of a manifold's point at the bodies' current poses: the anchor on A minus the
 /// anchor on B, along the normal (> 0 overlap).
-double currentPenetration(const Body& a, const Body& b, const Manifold& manifold, int point);
+inline double currentPenetration(const Body& a, const Body& b, const Manifold& manifold,
+                                 int point) {
+  const ContactPoint& contact = manifold.points[static_cast<size_t>(point)];
+  return (a.toWorld(contact.anchorA) - b.toWorld(contact.anchorB)).dot(manifold.normal);
+}
 
 // ---- targets and friction ----
 
