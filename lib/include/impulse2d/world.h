@@ -16,6 +16,8 @@
 //                          only the manifolds with an awake body.
 //   6. integratePositions  awake bodies: x += v·h, θ += ω·h, with the velocities after impulses.
 //   7. solvePositions      the solver removes what penetration remains.
+//   A solver that integrates the bodies itself (soft step, ContactSolver::integratesBodies) does
+//   4-7 within its own substeps in solveVelocities; the world then only clears the forces.
 //   8. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
 //                          thresholds for timeToSleep sleeps; its velocities become zero.
 #pragma once
@@ -85,6 +87,7 @@ class World : public Simulation {
   int islandOf(int body);
   void wakeTouchedIslands();
   void integrateVelocities(double h);
+  void clearForces();
   std::vector<Manifold>& manifoldsToSolve();
   void storeSolvedManifolds();
   void integratePositions(double h);
