@@ -57,6 +57,7 @@ const std::vector<MethodRun> kPyramidMethods = {
     {"sequential 8 iterations + position pass", "sequential", 8, 0.0},
     {"sequential 16 iterations + position pass", "sequential", 16, 0.0},
     {"sequential 20 iterations (default) + position pass", "sequential", 0, 0.0},
+    {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
     {"micro 200 per contact (default)", "micro", 0, kShortRunTime},
 };
 
@@ -64,6 +65,7 @@ const std::vector<MethodRun> kStackMethods = {
     {"box2d 8+3", "box2d", 8, 0.0},
     {"sequential 8", "sequential", 8, 0.0},
     {"sequential 20 (default)", "sequential", 0, 0.0},
+    {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
     {"micro 200 per contact (default)", "micro", 0, 0.0},
     {"reference", "reference", 0, 0.0},
 };

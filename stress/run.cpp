@@ -24,6 +24,7 @@ std::vector<Method> baseMethods() {
        "sequential",
        {"solver.accumulate_impulses=false", "solver.warm_starting=false"}},
       {"reference", "reference", {}},
+      {"soft step", "soft_step", {}},
       {"box2d", kBox2dName, {}},
   };
 }
