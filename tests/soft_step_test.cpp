@@ -213,3 +213,65 @@ TEST_CASE("free fall is semi-implicit Euler in the solver's substeps", "[soft_st
   const double fallen = kGravity * h * h * substeps * (substeps + 1) / 2.0;
   CHECK(world->bodies()[1].position.y() == Approx(10.5 - fallen).epsilon(1e-12));
 }
+
+TEST_CASE("heavy on light: each point sinks by its load over m_eff·ω², the spring's deflection",
+          "[soft_step][spring][mass_ratio]") {
+  // A box r times denser on a unit box on the ground. At rest each of the two corner points of
+  // the pair carries half the heavy box's weight, Mg/2, on a spring of stiffness m_eff·ω², where
+  // 1/m_eff = 1/m + 1/M + (½)²/I_m + (½)²/I_M = 2.5(1 + 1/r)/m for unit boxes (I = m/6). The
+  // sag grows with the mass ratio: the reason soft contacts of a fixed hertz give way under a
+  // heavy load (docs/soft-step.md).
+  constexpr double kRatio = 10.0;
+  Scene scene = stackScene("soft_step", 2, 0.6);
+  scene.bodies.back().density = kRatio;
+  auto world = buildWorld(scene);
+  runSteps(*world, stepsIn(3.0));
+  const SoftStepSettings soft;
+  const double omega = 2.0 * kPi * soft.contactHertz;
+  const double effectiveMass = kBoxMass / (2.5 * (1.0 + 1.0 / kRatio));
+  const double load = kRatio * kBoxMass * kGravity / 2.0;
+  const double sag = load / (effectiveMass * omega * omega);
+  for (const Manifold& manifold : world->manifolds()) {
+    if (manifold.bodyA != 1) continue;
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      CHECK(manifold.points[size_t(i)].penetration == Approx(sag).epsilon(0.03));
+    }
+  }
+}
+
+TEST_CASE("a tall stack stands on stiff enough springs: 20 boxes buckle at 30 Hz, stand at 60 Hz",
+          "[soft_step][stack][stability]") {
+  // A column on springs of rotational stiffness K per joint buckles once the weight's
+  // overturning moment outgrows them; K grows with ω², so 20 boxes need about 40 Hz
+  // (docs/soft-step.md).
+  constexpr int kBoxes = 20;
+  Scene scene = stackScene("soft_step", kBoxes, 0.6);
+  const auto topTravel = [&] {
+    auto world = buildWorld(scene);
+    runSteps(*world, stepsIn(2.0));
+    const Vec2 settled = world->bodies().back().position;
+    runSteps(*world, stepsIn(8.0));
+    return (world->bodies().back().position - settled).norm();
+  };
+  CHECK(topTravel() > 0.5);  // toppled
+  scene.solverSettings.softStep.contactHertz = 60.0;
+  CHECK(topTravel() < 0.05);  // stands, creeping by a few centimetres in 8 s
+}
+
+TEST_CASE("a 40-box stack stands with 16 substeps of 240 Hz contacts", "[soft_step][stack]") {
+  constexpr int kBoxes = 40;
+  Scene scene = stackScene("soft_step", kBoxes, 0.6);
+  scene.solverSettings.softStep.substeps = 16;
+  scene.solverSettings.softStep.contactHertz = 240.0;
+  auto world = buildWorld(scene);
+  runSteps(*world, stepsIn(1.0));
+  const Vec2 settled = world->bodies().back().position;
+  double largestMove = 0.0;
+  for (int step = 0; step < stepsIn(9.0); ++step) {
+    world->step();
+    largestMove = std::max(largestMove, (world->bodies().back().position - settled).norm());
+  }
+  WARN("figure: 40-box stack, 16 substeps at 240 Hz: top moves " << largestMove
+                                                                 << " m from 1 s to 10 s");
+  CHECK(largestMove < 0.01);
+}
