@@ -46,7 +46,8 @@ potential energy at the start and the end, and what it wrote.
 
 options (a value follows the option or '=': --steps 100, --steps=100):
   --solver NAME         run this solver instead of the scene's: micro, sequential, reference,
-                        box2d; its settings are then the defaults, change them with --set
+                        soft_step, box2d; its settings are then the defaults, change them
+                        with --set
   --steps N             number of steps (N >= 0) instead of [world] steps
   --dt S                time step in seconds (S > 0) instead of [world] dt
   --set SECTION.KEY=VALUE
