@@ -61,6 +61,7 @@ const std::vector<MethodRun> kPyramidMethods = {
     {"sequential 8 iterations + position pass", "sequential", 8, 0.0},
     {"sequential 16 iterations + position pass", "sequential", 16, 0.0},
     {"sequential 20 iterations (default) + position pass", "sequential", 0, 0.0},
+    {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
     {"micro 200 per contact (default)", "micro", 0, kShortRunTime},
 };
 
@@ -68,6 +69,7 @@ const std::vector<MethodRun> kStackMethods = {
     {"box2d 8+3", "box2d", 8, 0.0},
     {"sequential 8", "sequential", 8, 0.0},
     {"sequential 20 (default)", "sequential", 0, 0.0},
+    {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
     {"micro 200 per contact (default)", "micro", 0, 0.0},
     {"reference", "reference", 0, 0.0},
 };
@@ -157,6 +159,27 @@ void printTargetVerdict(const std::vector<RunFigures>& pyramid) {
     if (kPyramidMethods[i].solver == "sequential") {
       printTargetRow(kPyramidMethods[i], pyramid[i], *box2d);
     }
+  }
+}
+
+/// Issue 15's soft step target: no more than Box2D's time per step, settled drift ≤ 1 mm.
+void printSoftStepVerdict(const std::vector<RunFigures>& pyramid) {
+  std::printf("\n### Target on pyramid20: soft step against Box2D 8+3, same run\n\n");
+  std::printf(
+      "| soft step | time per step / Box2D's | ≤ 1.0× | settled drift 1-10 s | ≤ %.0e m |\n",
+      kTargetDrift);
+  std::printf("| --- | --- | --- | --- | --- |\n");
+  const RunFigures* box2d = nullptr;
+  for (size_t i = 0; i < kPyramidMethods.size(); ++i) {
+    if (kPyramidMethods[i].solver == "box2d") box2d = &pyramid[i];
+  }
+  for (size_t i = 0; i < kPyramidMethods.size(); ++i) {
+    if (kPyramidMethods[i].solver != "soft_step") continue;
+    const double ratio = pyramid[i].medianMicroseconds / box2d->medianMicroseconds;
+    std::printf("| %s | %.2f× (%.0f / %.0f µs) | %s | %.2e m (Box2D %.2e m) | %s |\n",
+                kPyramidMethods[i].label.c_str(), ratio, pyramid[i].medianMicroseconds,
+                box2d->medianMicroseconds, ratio <= 1.0 ? "yes" : "no", pyramid[i].drift,
+                box2d->drift, pyramid[i].drift <= kTargetDrift ? "yes" : "no");
   }
 }
 
@@ -255,11 +278,15 @@ int main(int argc, char** argv) {
       measureAndPrint("pyramid20", kPyramidMethods, length, false);
   measureAndPrint("stack10", kStackMethods, length, true);
   measureAndPrint("stack20", kStackMethods, length, true);
-  measureAndPrint("pyramid40", {kPyramidMethods[0], kPyramidMethods[1], kPyramidMethods[3]}, length,
-                  false);
-  measureAndPrint("rain", {kStackMethods[0], kStackMethods[1], kStackMethods[2], kStackMethods[3]},
+  measureAndPrint("pyramid40",
+                  {kPyramidMethods[0], kPyramidMethods[1], kPyramidMethods[3], kPyramidMethods[4]},
                   length, false);
-  printAnalyticTable({"box2d", "sequential", "micro", "reference"});
+  measureAndPrint(
+      "rain",
+      {kStackMethods[0], kStackMethods[1], kStackMethods[2], kStackMethods[3], kStackMethods[4]},
+      length, false);
+  printAnalyticTable({"box2d", "sequential", "micro", "reference", "soft_step"});
   printTargetVerdict(pyramid);
+  printSoftStepVerdict(pyramid);
   return 0;
 }

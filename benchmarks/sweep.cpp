@@ -55,8 +55,8 @@ struct Grid {
 };
 
 Grid sweepGrid(bool quick) {
-  if (quick) return {{"micro", "sequential", "reference", "box2d"}, {8}, {60}, 5.0};
-  return {{"micro", "sequential", "reference", "box2d"},
+  if (quick) return {{"micro", "sequential", "reference", "soft_step", "box2d"}, {8}, {60}, 5.0};
+  return {{"micro", "sequential", "reference", "soft_step", "box2d"},
           {1, 2, 4, 8, 16, 32, 64},
           {30, 60, 120, 240},
           10.0};

@@ -31,6 +31,7 @@ std::vector<Method> baseMethods() {
        "sequential",
        {"solver.accumulate_impulses=false", "solver.warm_starting=false"}},
       {"reference", "reference", {}},
+      {"soft step", "soft_step", {}},
       {"box2d", kBox2dName, {}},
   };
 }
@@ -43,6 +44,9 @@ std::vector<Method> extraMethods() {
       {"sequential + 4 substeps", "sequential", {"world.substeps=4"}},
       {"sequential + speculative contacts", "sequential", {"world.speculative_contacts=true"}},
       {"sequential − bias", "sequential", {"solver.penetration_bias=false"}},
+      {"soft step, 16 substeps at 240 Hz",
+       "soft_step",
+       {"solver.substeps=16", "solver.contact_hertz=240"}},
       {"micro − both bounce fixes",
        "micro",
        {"solver.remove_acceleration_velocity=false", "solver.lower_restitution_at_low_speed=false",

@@ -3,6 +3,8 @@
 // within tolerances derived from what the two engines do differently (docs/box2d-reference.md).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <cfloat>
 #include <cmath>
 #include <iostream>
@@ -132,6 +134,19 @@ TEST_CASE("Box2D's contacts read back in our sign convention", "[box2d][conventi
   CHECK(normalImpulse == Approx(weight).epsilon(0.01));
 }
 
+namespace {
+
+/// The methods that integrate once per step as Box2D 2.4.1 does. Soft step integrates in its own
+/// substeps and bounces on the closing speed before the step's gravity (Box2D v3's way), so its
+/// free fall and bounce are checked against their own formulas (soft_step_test.cpp).
+std::vector<std::string> stepIntegratedSolvers() {
+  std::vector<std::string> names = solverNames();
+  names.erase(std::remove(names.begin(), names.end(), "soft_step"), names.end());
+  return names;
+}
+
+}  // namespace
+
 TEST_CASE("free fall agrees with Box2D to a micrometre", "[box2d][free-fall]") {
   // Half a second thrown from the origin: both engines integrate semi-implicit Euler, so after n
   // steps x = x0 + n·dt·v0 + g·dt²·n(n+1)/2 in each; only Box2D's float rounding (positions of
@@ -141,7 +156,7 @@ TEST_CASE("free fall agrees with Box2D to a micrometre", "[box2d][free-fall]") {
   thrown.velocity = Vec2(1.0, 2.0);
   thrown.angularVelocity = 1.0;
   scene.bodies.push_back(thrown);
-  const Agreement agreement = measureAgreement(scene, solverNames());
+  const Agreement agreement = measureAgreement(scene, stepIntegratedSolvers());
   std::cout << agreementSummary(agreement) << "\n";
   const double n = double(scene.steps);
   const double dt = scene.world.dt;
@@ -199,7 +214,7 @@ TEST_CASE("bounce apexes agree with Box2D within 3%", "[box2d][restitution]") {
   dropped.restitution = kRestitution;
   scene.bodies.push_back(dropped);
   scene.solverSettings.micro.removeAccelerationVelocity = false;
-  const Agreement agreement = measureAgreement(scene, solverNames());
+  const Agreement agreement = measureAgreement(scene, stepIntegratedSolvers());
   std::cout << agreementTable(agreement) << "\n";
   // Box2D itself: e²h, give or take one step of travel at the impact speed.
   const double impactTravel = kGravity * dt * (kFallSteps + 1) * dt;

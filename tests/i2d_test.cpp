@@ -162,7 +162,7 @@ TEST_CASE("a bad command line is one error line and exit code 2", "[i2d][errors]
       {"run " + scene + " --dt 0", "error: option --dt needs a finite number > 0, not '0'\n"},
       {"run " + scene + " --every 0", "error: option --every needs an integer >= 1, not '0'\n"},
       {"run " + scene + " --solver fast",
-       "error: unknown solver 'fast' (known: micro, sequential, reference, box2d)\n"},
+       "error: unknown solver 'fast' (known: micro, sequential, reference, soft_step, box2d)\n"},
       {"run " + scene + " --set world.dt=-1", "error: --set:1:10: 'dt' must be > 0, not -1\n"},
       {"check " + scene + " " + scene,
        "error: unexpected argument '" + scene + "': i2d check takes one SCENE\n"},

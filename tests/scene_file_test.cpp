@@ -233,8 +233,9 @@ TEST_CASE("a bad --set is one located error", "[scene-file][set][errors]") {
   CHECK(errorOfSetting("world.dt=-1") == "--set:1:10: 'dt' must be > 0, not -1");
   CHECK(errorOfSetting("world.steps=many") ==
         "--set:1:13: 'steps' must be an integer, not a string");
-  CHECK(errorOfSetting("world.solver=nope") ==
-        "--set:1:14: unknown solver 'nope' (known: micro, sequential, reference, box2d)");
+  CHECK(
+      errorOfSetting("world.solver=nope") ==
+      "--set:1:14: unknown solver 'nope' (known: micro, sequential, reference, soft_step, box2d)");
 }
 
 TEST_CASE("each kind of bad input is one error at its place", "[scene-file][errors]") {
@@ -303,7 +304,8 @@ TEST_CASE("each kind of bad input is one error at its place", "[scene-file][erro
   }
   SECTION("unknown solver or shape name") {
     CHECK(errorOf("[world]\nsolver = \"fast\"\n" + ball) ==
-          "bad.toml:2:10: unknown solver 'fast' (known: micro, sequential, reference, box2d)");
+          "bad.toml:2:10: unknown solver 'fast' (known: micro, sequential, reference, soft_step, "
+          "box2d)");
     CHECK(errorOf("[[body]]\nshape = \"triangle\"\n") ==
           "bad.toml:2:9: unknown shape 'triangle' (known: box, circle, polygon)");
   }

@@ -11,7 +11,7 @@ using namespace solvers;
 
 namespace {
 
-const std::vector<std::string> kMethods{"micro", "sequential", "reference"};
+const std::vector<std::string> kMethods{"micro", "sequential", "reference", "soft_step"};
 
 /// m/s². The acceleration of body `index` along `direction`, from its velocity 1 s and 2 s after
 /// release (semi-implicit Euler makes v = a·t exact, so the start-up transient drops out).

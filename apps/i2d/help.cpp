@@ -46,7 +46,8 @@ potential energy at the start and the end, and what it wrote.
 
 options (a value follows the option or '=': --steps 100, --steps=100):
   --solver NAME         run this solver instead of the scene's: micro, sequential, reference,
-                        box2d; its settings are then the defaults, change them with --set
+                        soft_step, box2d; its settings are then the defaults, change them
+                        with --set
   --steps N             number of steps (N >= 0) instead of [world] steps
   --dt S                time step in seconds (S > 0) instead of [world] dt
   --set SECTION.KEY=VALUE
@@ -105,7 +106,7 @@ then prints each panel's energies at the end.
 
 panels (one of the two):
   --solvers LIST        one panel per solver, labelled with its name, LIST comma-separated:
-                        micro,sequential,reference,box2d
+                        micro,sequential,reference,soft_step,box2d
   --panel 'LABEL: SECTION.KEY=VALUE; SECTION.KEY=VALUE'
                         one panel, repeatable: the scene with these --set changes, labelled
                         LABEL; the changes after ':' are separated by ';' and may be left
@@ -142,7 +143,7 @@ the ground sits 0.015-0.02 m higher in Box2D, and that is agreement.
 
 options (a value follows the option or '=': --steps 100, --steps=100):
   --solvers LIST        the methods to measure, comma-separated (default
-                        micro,sequential,reference); Box2D is always the reference
+                        micro,sequential,reference,soft_step); Box2D is always the reference
   --summary             the summary table only (for scenes of many bodies)
   --steps N, --dt S, --set SECTION.KEY=VALUE
                         as for i2d run

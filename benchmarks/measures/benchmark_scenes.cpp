@@ -56,7 +56,8 @@ int pyramidBoxes(int rows) {
 std::string iterationKey(const std::string& solver) {
   if (solver == "micro") return "velocity_iterations_per_contact";
   if (solver == "reference") return "";
-  return "velocity_iterations";  // sequential and box2d
+  if (solver == "soft_step") return "substeps";  // one biased and one relax sweep per substep
+  return "velocity_iterations";                  // sequential and box2d
 }
 
 Scene withMethod(Scene scene, const std::string& solver, int iterations) {

@@ -16,7 +16,8 @@ namespace benchmarks {
 
 namespace {
 
-const std::vector<std::string> kScalingSolvers = {"micro", "sequential", "reference", "box2d"};
+const std::vector<std::string> kScalingSolvers = {"micro", "sequential", "reference", "soft_step",
+                                                  "box2d"};
 
 /// s of stepping one size may take.
 constexpr double kSizeBudget = 10.0;

@@ -11,7 +11,8 @@ namespace benchmarks {
 
 namespace {
 
-const std::vector<std::string> kSolverOrder = {"micro", "sequential", "reference", "box2d"};
+const std::vector<std::string> kSolverOrder = {"micro", "sequential", "reference", "soft_step",
+                                               "box2d"};
 
 std::vector<std::string> scenesOf(const std::vector<SweepPoint>& points) {
   std::vector<std::string> scenes;

@@ -9,13 +9,13 @@ set output output
 
 scenes = "stack20 pyramid20 rain"
 errors = "'contact-force error, RMS relative (1-4 s)' 'settled drift 1-4 s (m)' 'largest penetration at rest 4-6 s (m)'"
-methods = "micro sequential reference"
-colours = "#d95f02 #1b9e77 #7570b3"
+methods = "micro sequential reference soft_step"
+colours = "#d95f02 #1b9e77 #7570b3 #e7298a"
 
 measured(scene) = strcol(1) eq scene && strcol(9) eq "measured"
 of(scene, method) = measured(scene) && strcol(3) eq method
 
-set multiplot layout 1,3 title "Speed against accuracy: every method x iterations (1-64) x dt (1/30-1/240 s), sleeping off" font ",12"
+set multiplot layout 1,3 title "Speed against accuracy: every method x iterations or substeps (1-64) x dt (1/30-1/240 s), sleeping off" font ",12"
 set logscale xy
 set format y "10^{%T}"
 set format x "10^{%T}"

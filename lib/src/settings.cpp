@@ -90,4 +90,18 @@ std::vector<SettingField> describe(Box2dSettings& s) {
           {"position_iterations", &s.positionIterations}};
 }
 
+std::vector<SettingField> describe(SoftStepSettings& s) {
+  return {{"substeps", &s.substeps},
+          {"contact_hertz", &s.contactHertz},
+          {"max_hertz_per_substep_rate", &s.maxHertzPerSubstepRate},
+          {"damping_ratio", &s.dampingRatio},
+          {"static_hertz_factor", &s.staticHertzFactor},
+          {"max_push_velocity", &s.maxPushVelocity},
+          {"soft_contacts", &s.softContacts},
+          {"relax", &s.relax},
+          {"warm_starting", &s.warmStarting},
+          {"restitution", &s.restitution},
+          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}};
+}
+
 }  // namespace impulse2d

@@ -70,12 +70,17 @@ void World::substep(double h) {
   wakeDisturbedBodies();
   findContacts(h);
   wakeTouchedIslands();
-  integrateVelocities(h);
-  const StepContext context{bodies_, manifoldsToSolve(), h, observer_};
+  const bool solverMovesBodies = solver_->integratesBodies();
+  if (!solverMovesBodies) integrateVelocities(h);
+  const StepContext context{bodies_, manifoldsToSolve(), h, observer_, settings_.gravity};
   solver_->solveVelocities(context);
-  integratePositions(h);
+  if (!solverMovesBodies) integratePositions(h);
   solver_->solvePositions(context);
-  refreshCaches();
+  if (solverMovesBodies) {
+    clearForces();
+  } else {
+    refreshCaches();
+  }
   storeSolvedManifolds();
   putRestingIslandsToSleep(h);
 }
@@ -230,6 +235,16 @@ void World::integrateVelocities(double h) {
     body.lastAcceleration = settings_.gravity + body.inverseMass * body.force;
     body.velocity += h * body.lastAcceleration;
     body.angularVelocity += h * body.inverseInertia * body.torque;
+    body.force.setZero();
+    body.torque = 0.0;
+  }
+}
+
+// After a solver that moved the bodies itself (it used the forces in its substeps).
+void World::clearForces() {
+  for (Body& body : bodies_) {
+    if (!body.isAwake()) continue;
+    ++statistics_.awakeBodies;
     body.force.setZero();
     body.torque = 0.0;
   }

@@ -183,6 +183,45 @@ struct Box2dSettings {
   int positionIterations = 3;
 };
 
+/// Soft step (Box2D v3, Catto's Solver2D solve_soft_step; docs/soft-step.md): substeps of soft
+/// contact constraints, each a spring-damper of a set stiffness and damping, then relaxation and
+/// a restitution pass. The solver moves the bodies itself, substep by substep.
+struct SoftStepSettings {
+  /// Substeps per world step: velocities, warm start, a solve with bias, positions, a relax
+  /// solve. Box2D v3's default: 4.
+  int substeps = 4;
+  /// Hz. Stiffness of a contact as the frequency it would oscillate at on its own mass
+  /// (Box2D v3's contactHertz, 30).
+  double contactHertz = 30.0;
+  /// The stiffness never exceeds this fraction of the substep rate: a spring must be resolved by
+  /// several substeps per period (Box2D v3: a quarter).
+  double maxHertzPerSubstepRate = 0.25;
+  /// Damping ratio of the contact spring; above 1 it is overdamped and creeps back without
+  /// overshoot (Box2D v3's contactDampingRatio, 10).
+  double dampingRatio = 10.0;
+  /// A contact with a static body is this many times stiffer in hertz, so the ground holds the
+  /// weight of a pile (Box2D v3: 2).
+  double staticHertzFactor = 2.0;
+  /// m/s. Largest speed at which the bias pushes overlapping bodies apart (Box2D v3's
+  /// contactPushMaxVelocity, 3).
+  double maxPushVelocity = 3.0;
+  /// Soft constraints: bias rate, mass scale and impulse scale from hertz and damping ratio. Off:
+  /// the rigid limit (infinite hertz): bias rate 1/h, mass scale 1, impulse scale 0, so each
+  /// substep tries to remove the whole overlap.
+  bool softContacts = true;
+  /// A second solve after the positions moved, without bias, removing the velocity the bias added
+  /// (Box2D v3's relax). Off: that velocity stays and the body overshoots.
+  bool relax = true;
+  /// Begin each step from the last step's impulses (by feature id) and each substep from the last
+  /// substep's. Off: every substep starts from zero.
+  bool warmStarting = true;
+  /// After the substeps, one pass that makes a closing contact separate at −e times its closing
+  /// speed before the step (Box2D v3's b2ApplyRestitution). Off: soft contacts do not bounce.
+  bool restitution = true;
+  /// m/s. Below this closing speed a contact does not bounce (Box2D v3: 1 m/s).
+  double restitutionVelocityThreshold = 1.0;
+};
+
 /// The settings of every solver; a scene picks one solver, and its [solver] table sets that
 /// solver's struct.
 struct SolverSettings {
@@ -190,6 +229,7 @@ struct SolverSettings {
   SequentialImpulseSettings sequential;
   ReferenceSolverSettings reference;
   Box2dSettings box2d;
+  SoftStepSettings softStep;
 };
 
 /// One named field of a settings struct, for setting it by name from a scene file or the command
@@ -204,5 +244,6 @@ std::vector<SettingField> describe(MicroCollisionSettings& settings);
 std::vector<SettingField> describe(SequentialImpulseSettings& settings);
 std::vector<SettingField> describe(ReferenceSolverSettings& settings);
 std::vector<SettingField> describe(Box2dSettings& settings);
+std::vector<SettingField> describe(SoftStepSettings& settings);
 
 }  // namespace impulse2d

@@ -44,6 +44,8 @@ struct StepContext {
   std::vector<Manifold>& manifolds;
   double dt;
   SolverObserver* observer = nullptr;  ///< null unless the step is being traced
+  /// m/s^2. The world's gravity, for a solver that integrates the bodies itself.
+  Vec2 gravity = Vec2::Zero();
 
   /// Tells the observer, if the step is being traced, what the solver just did.
   void report(const SolverEvent& event) const {
@@ -62,13 +64,16 @@ struct SolveReport {
 class ContactSolver {
  public:
   virtual ~ContactSolver() = default;
-  /// The name scene files use: "micro", "sequential", "reference".
+  /// The name scene files use: "micro", "sequential", "reference", "soft_step".
   virtual std::string name() const = 0;
   /// Contact impulses: change the velocities so no contact keeps closing.
   virtual void solveVelocities(const StepContext& context) = 0;
   /// Remove the penetration that remains after the positions moved, without adding velocity.
   virtual void solvePositions(const StepContext& context) = 0;
   virtual SolveReport lastReport() const { return {}; }
+  /// True for a method that moves the bodies itself within its own substeps (soft step): the
+  /// world then leaves velocities and positions to it and only clears the forces it used.
+  virtual bool integratesBodies() const { return false; }
 };
 
 /// The names of the solvers this library builds, in the order they were written.

@@ -18,6 +18,8 @@
 //                          the rotation is updated, the bounds wait for step 8.
 //   7. solvePositions      the solver removes what penetration remains.
 //   8. refreshCaches       awake bodies: rotation from the angle and bounds, once per substep.
+//   A solver that integrates the bodies itself (soft step, ContactSolver::integratesBodies) does
+//   4-8 within its own substeps in solveVelocities; the world then only clears the forces.
 //   9. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
 //                          thresholds for timeToSleep sleeps; its velocities become zero.
 #pragma once
@@ -87,6 +89,7 @@ class World : public Simulation {
   int islandOf(int body);
   void wakeTouchedIslands();
   void integrateVelocities(double h);
+  void clearForces();
   std::vector<Manifold>& manifoldsToSolve();
   void storeSolvedManifolds();
   void integratePositions(double h);

@@ -71,6 +71,7 @@ std::vector<SettingField> solverSettingFields(SolverSettings& settings, const st
   if (solver == "micro") return describe(settings.micro);
   if (solver == "sequential") return describe(settings.sequential);
   if (solver == "reference") return describe(settings.reference);
+  if (solver == "soft_step") return describe(settings.softStep);
   if (solver == "box2d") return describe(settings.box2d);
   return {};
 }

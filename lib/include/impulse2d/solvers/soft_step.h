@@ -1,0 +1,109 @@
+// Soft step (Box2D v3's solver; Catto's Solver2D "solve_soft_step", docs/soft-step.md): the step
+// is cut into substeps, and in each the contacts are soft constraints — a spring and damper of a
+// set stiffness (hertz) and damping ratio pushing the overlap out — solved once with that bias
+// after the velocities are integrated, then once more without it ("relax") after the positions
+// moved. The bodies are integrated here, substep by substep; the overlap in a substep comes from
+// how far the bodies moved since the step began, not from a new collision test. A restitution
+// pass after the substeps gives the bounce.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "impulse2d/solver.h"
+
+namespace impulse2d {
+
+/// The three numbers a soft constraint is solved with in a substep of length h, from its
+/// stiffness ω = 2πf and damping ratio ζ (Box2D v3's b2MakeSoft): a1 = 2ζ + hω, a2 = hω·a1,
+/// a3 = 1/(1 + a2); biasRate = ω/a1, massScale = a2·a3, impulseScale = a3. The impulse is then
+/// −massScale·m·(vn + biasRate·s) − impulseScale·λ: an implicit spring-damper step.
+struct Softness {
+  double biasRate = 0.0;      ///< 1/s: the velocity asked per metre of overlap
+  double massScale = 1.0;     ///< fraction of the rigid impulse applied
+  double impulseScale = 0.0;  ///< fraction of the accumulated impulse given back
+};
+
+/// The softness of a spring of `hertz` and `dampingRatio` in a substep h; hertz 0 is no spring
+/// (no bias, rigid mass); the rigid limit (hertz → ∞) is rigidSoftness(h).
+Softness makeSoftness(double hertz, double dampingRatio, double h);
+/// The limit of infinite stiffness: the whole overlap is asked back in one substep.
+Softness rigidSoftness(double h);
+
+class SoftStepSolver : public ContactSolver {
+ public:
+  explicit SoftStepSolver(const SoftStepSettings& settings) : settings_(settings) {}
+
+  std::string name() const override { return "soft_step"; }
+  /// The whole step: substeps of velocity, warm start, biased solve, positions and relax, then
+  /// restitution; moves the bodies.
+  void solveVelocities(const StepContext& context) override;
+  /// Nothing: the soft constraints already pushed the overlap out within the substeps.
+  void solvePositions(const StepContext&) override {}
+  /// iterations: substeps made; residual: the largest normal impulse change in the last relax.
+  SolveReport lastReport() const override { return report_; }
+  bool integratesBodies() const override { return true; }
+
+  const SoftStepSettings& settings() const { return settings_; }
+
+ private:
+  /// What the iterations touch of a body: velocities, inverse masses, and how far it moved since
+  /// the step began (deltaAngle's cosine and sine rotate the contact arms).
+  struct SolverBody {
+    Vec2 velocity = Vec2::Zero();
+    double angularVelocity = 0.0;
+    double inverseMass = 0.0;
+    double inverseInertia = 0.0;
+    Vec2 velocityPerSubstep = Vec2::Zero();  ///< (g + F/m)·h
+    double angularVelocityPerSubstep = 0.0;  ///< (τ/I)·h
+    Vec2 deltaPosition = Vec2::Zero();
+    double deltaAngle = 0.0;
+    double deltaCos = 1.0;
+    double deltaSin = 0.0;
+  };
+  /// One contact point, prepared once per step (Box2D v3's b2PrepareContactsTask).
+  struct ConstraintPoint {
+    Vec2 armA = Vec2::Zero();  ///< contact point − A's centre at the step's start
+    Vec2 armB = Vec2::Zero();
+    /// Separation minus (armB − armA)·n: adding (cB + rB − cA − rA)·n now gives the separation.
+    double baseSeparation = 0.0;
+    double normalMass = 0.0;
+    double tangentMass = 0.0;
+    double normalImpulse = 0.0;
+    double tangentImpulse = 0.0;
+    double totalNormalImpulse = 0.0;  ///< all normal impulse applied this step: did it touch?
+    double relativeVelocity = 0.0;    ///< vn before the step, for restitution
+  };
+  struct Constraint {
+    int manifold = 0;
+    int bodyA = 0;
+    int bodyB = 0;
+    Vec2 normal = Vec2::Zero();
+    double friction = 0.0;
+    double restitution = 0.0;
+    Softness softness;
+    int pointCount = 0;
+    std::array<ConstraintPoint, 2> points;
+  };
+
+  void prepareBodies(const StepContext& context, double h);
+  void prepareConstraints(const StepContext& context, double h);
+  void integrateVelocities();
+  void warmStart();
+  double solve(const StepContext& context, bool useBias, int substep);
+  void solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b, bool useBias);
+  void solveFriction(Constraint& constraint, SolverBody& a, SolverBody& b) const;
+  void integratePositions(double h);
+  void applyRestitution();
+  void storeImpulses(const StepContext& context) const;
+  void finishBodies(const StepContext& context, double h) const;
+
+  SoftStepSettings settings_;
+  std::vector<SolverBody> bodies_;
+  std::vector<Constraint> constraints_;
+  double inverseSubstep_ = 0.0;
+  double pushVelocity_ = 0.0;
+  SolveReport report_;
+};
+
+}  // namespace impulse2d

@@ -1,0 +1,312 @@
+// Soft step: per step, prepare the contact constraints; per substep, integrate velocities, warm
+// start, solve with the soft bias, integrate positions, relax; then restitution and store.
+#include "impulse2d/solvers/soft_step.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "impulse2d/solvers/contact_math.h"
+
+namespace impulse2d {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// r turned by the rotation whose cosine and sine are (c, s).
+Vec2 rotate(double c, double s, const Vec2& r) {
+  return Vec2(c * r.x() - s * r.y(), s * r.x() + c * r.y());
+}
+
+/// Velocity of a solver body's material at arm r.
+template <typename SolverBody>
+Vec2 pointVelocity(const SolverBody& body, const Vec2& r) {
+  return body.velocity + cross(body.angularVelocity, r);
+}
+
+/// Applies the impulse P at arms rA, rB: −P to A, +P to B.
+template <typename SolverBody>
+void applyImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& P) {
+  a.velocity -= a.inverseMass * P;
+  a.angularVelocity -= a.inverseInertia * cross(rA, P);
+  b.velocity += b.inverseMass * P;
+  b.angularVelocity += b.inverseInertia * cross(rB, P);
+}
+
+}  // namespace
+
+Softness makeSoftness(double hertz, double dampingRatio, double h) {
+  if (hertz == 0.0) return {};
+  const double omega = 2.0 * kPi * hertz;
+  const double a1 = 2.0 * dampingRatio + h * omega;
+  const double a2 = h * omega * a1;
+  const double a3 = 1.0 / (1.0 + a2);
+  return {omega / a1, a2 * a3, a3};
+}
+
+Softness rigidSoftness(double h) {
+  return {1.0 / h, 1.0, 0.0};
+}
+
+void SoftStepSolver::solveVelocities(const StepContext& context) {
+  const double h = context.dt / settings_.substeps;
+  inverseSubstep_ = 1.0 / h;
+  pushVelocity_ = settings_.maxPushVelocity;
+  prepareBodies(context, h);
+  prepareConstraints(context, h);
+  report_ = SolveReport{};
+  for (int substep = 0; substep < settings_.substeps; ++substep) {
+    integrateVelocities();
+    warmStart();
+    report_.residual = solve(context, true, substep);
+    integratePositions(h);
+    if (settings_.relax) report_.residual = solve(context, false, substep);
+    report_.iterations = substep + 1;
+  }
+  if (settings_.restitution) applyRestitution();
+  storeImpulses(context);
+  finishBodies(context, h);
+}
+
+// Only awake dynamic bodies move: the others get zero inverse mass, so the contact pushes them
+// not at all, and zero velocity.
+void SoftStepSolver::prepareBodies(const StepContext& context, double h) {
+  bodies_.assign(context.bodies.size(), SolverBody{});
+  for (size_t i = 0; i < context.bodies.size(); ++i) {
+    const Body& body = context.bodies[i];
+    if (!body.isAwake()) continue;
+    SolverBody& solverBody = bodies_[i];
+    solverBody.velocity = body.velocity;
+    solverBody.angularVelocity = body.angularVelocity;
+    solverBody.inverseMass = body.inverseMass;
+    solverBody.inverseInertia = body.inverseInertia;
+    solverBody.velocityPerSubstep = h * (context.gravity + body.inverseMass * body.force);
+    solverBody.angularVelocityPerSubstep = h * body.inverseInertia * body.torque;
+  }
+}
+
+// Box2D v3's prepare: arms from each centre to the contact point, the normal and tangent masses,
+// the separation base, the closing velocity for restitution, and the impulses to warm start
+// from (the manifold keeps the impulse over the step; a substep's is that over the substeps).
+void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
+  const double hertz =
+      std::min(settings_.contactHertz, settings_.maxHertzPerSubstepRate * inverseSubstep_);
+  const Softness contact =
+      settings_.softContacts ? makeSoftness(hertz, settings_.dampingRatio, h) : rigidSoftness(h);
+  const Softness againstStatic =
+      settings_.softContacts
+          ? makeSoftness(settings_.staticHertzFactor * hertz, settings_.dampingRatio, h)
+          : rigidSoftness(h);
+  const double warm = settings_.warmStarting ? 1.0 / settings_.substeps : 0.0;
+  constraints_.resize(context.manifolds.size());
+  for (size_t m = 0; m < context.manifolds.size(); ++m) {
+    const Manifold& manifold = context.manifolds[m];
+    Constraint& constraint = constraints_[m];
+    constraint = Constraint{};
+    constraint.manifold = int(m);
+    constraint.bodyA = manifold.bodyA;
+    constraint.bodyB = manifold.bodyB;
+    constraint.normal = manifold.normal;
+    constraint.friction = manifold.friction;
+    constraint.restitution = manifold.restitution;
+    constraint.pointCount = manifold.pointCount;
+    const Body& bodyA = context.bodies[size_t(manifold.bodyA)];
+    const Body& bodyB = context.bodies[size_t(manifold.bodyB)];
+    constraint.softness = bodyA.isAwake() && bodyB.isAwake() ? contact : againstStatic;
+    const SolverBody& a = bodies_[size_t(manifold.bodyA)];
+    const SolverBody& b = bodies_[size_t(manifold.bodyB)];
+    const Vec2 normal = manifold.normal;
+    const Vec2 tangent = manifold.tangent();
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      const ContactPoint& point = manifold.points[size_t(i)];
+      ConstraintPoint& cp = constraint.points[size_t(i)];
+      cp.armA = point.point - bodyA.position;
+      cp.armB = point.point - bodyB.position;
+      cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(normal);
+      const auto inverseMass = [&](const Vec2& d) {
+        const double rA = cross(cp.armA, d);
+        const double rB = cross(cp.armB, d);
+        return a.inverseMass + b.inverseMass + a.inverseInertia * rA * rA +
+               b.inverseInertia * rB * rB;
+      };
+      const double kNormal = inverseMass(normal);
+      const double kTangent = inverseMass(tangent);
+      cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
+      cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
+      cp.normalImpulse = warm * point.normalImpulse;
+      cp.tangentImpulse = warm * point.tangentImpulse;
+      cp.relativeVelocity = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(normal);
+    }
+  }
+}
+
+void SoftStepSolver::integrateVelocities() {
+  for (SolverBody& body : bodies_) {
+    body.velocity += body.velocityPerSubstep;
+    body.angularVelocity += body.angularVelocityPerSubstep;
+  }
+}
+
+// The last substep's impulses applied up front; off, each substep starts from zero.
+void SoftStepSolver::warmStart() {
+  for (Constraint& constraint : constraints_) {
+    SolverBody& a = bodies_[size_t(constraint.bodyA)];
+    SolverBody& b = bodies_[size_t(constraint.bodyB)];
+    const Vec2 tangent = leftPerpendicular(constraint.normal);
+    for (int i = 0; i < constraint.pointCount; ++i) {
+      ConstraintPoint& cp = constraint.points[size_t(i)];
+      if (!settings_.warmStarting) {
+        cp.normalImpulse = 0.0;
+        cp.tangentImpulse = 0.0;
+        continue;
+      }
+      cp.totalNormalImpulse += cp.normalImpulse;
+      applyImpulse(a, b, cp.armA, cp.armB,
+                   cp.normalImpulse * constraint.normal + cp.tangentImpulse * tangent);
+    }
+  }
+}
+
+// One Gauss-Seidel sweep: the normal impulses of each contact, then its friction. With bias the
+// overlap is pushed out softly; without (relax) only the velocities are made consistent.
+// Returns the largest normal impulse change, the sweep's residual.
+double SoftStepSolver::solve(const StepContext& context, bool useBias, int substep) {
+  double largestChange = 0.0;
+  for (Constraint& constraint : constraints_) {
+    SolverBody& a = bodies_[size_t(constraint.bodyA)];
+    SolverBody& b = bodies_[size_t(constraint.bodyB)];
+    std::array<double, 2> before = {constraint.points[0].normalImpulse,
+                                    constraint.points[1].normalImpulse};
+    solveNormals(constraint, a, b, useBias);
+    solveFriction(constraint, a, b);
+    for (int i = 0; i < constraint.pointCount; ++i) {
+      const ConstraintPoint& cp = constraint.points[size_t(i)];
+      const double change = cp.normalImpulse - before[size_t(i)];
+      largestChange = std::max(largestChange, std::abs(change));
+      if (context.observer && useBias) {
+        context.report({SolverEvent::Phase::Velocity, substep, constraint.manifold, i, 0.0, change,
+                        cp.tangentImpulse});
+      }
+    }
+  }
+  return largestChange;
+}
+
+// The separation now is the base plus how far the anchors moved along the (fixed) normal. A gap
+// (s > 0) may close within the substep and no further; an overlap is pushed out at the soft bias
+// rate, never faster than maxPushVelocity.
+void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b,
+                                  bool useBias) {
+  const Vec2 normal = constraint.normal;
+  const Vec2 moved = b.deltaPosition - a.deltaPosition;
+  const Softness& soft = constraint.softness;
+  for (int i = 0; i < constraint.pointCount; ++i) {
+    ConstraintPoint& cp = constraint.points[size_t(i)];
+    const Vec2 anchorsMoved =
+        moved + rotate(b.deltaCos, b.deltaSin, cp.armB) - rotate(a.deltaCos, a.deltaSin, cp.armA);
+    const double separation = cp.baseSeparation + anchorsMoved.dot(normal);
+    double bias = 0.0;
+    double massScale = 1.0;
+    double impulseScale = 0.0;
+    if (separation > 0.0) {
+      bias = separation * inverseSubstep_;
+    } else if (useBias) {
+      bias = std::max(soft.biasRate * separation, -pushVelocity_);
+      massScale = soft.massScale;
+      impulseScale = soft.impulseScale;
+    }
+    const double vn = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(normal);
+    const double impulse =
+        -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+    const double total = std::max(cp.normalImpulse + impulse, 0.0);
+    const double change = total - cp.normalImpulse;
+    cp.normalImpulse = total;
+    cp.totalNormalImpulse += change;
+    applyImpulse(a, b, cp.armA, cp.armB, change * normal);
+  }
+}
+
+// Coulomb friction on each point's running total, bounded by μ times its normal impulse.
+void SoftStepSolver::solveFriction(Constraint& constraint, SolverBody& a, SolverBody& b) const {
+  const Vec2 tangent = leftPerpendicular(constraint.normal);
+  for (int i = 0; i < constraint.pointCount; ++i) {
+    ConstraintPoint& cp = constraint.points[size_t(i)];
+    const double vt = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(tangent);
+    const double limit = constraint.friction * cp.normalImpulse;
+    const double total = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
+    const double change = total - cp.tangentImpulse;
+    cp.tangentImpulse = total;
+    applyImpulse(a, b, cp.armA, cp.armB, change * tangent);
+  }
+}
+
+// x += v·h; the rotation since the step began is kept as cosine and sine and turned by ω·h
+// without trigonometry (then renormalised), as Box2D v3 does.
+void SoftStepSolver::integratePositions(double h) {
+  for (SolverBody& body : bodies_) {
+    if (body.inverseMass == 0.0 && body.inverseInertia == 0.0) continue;
+    body.deltaPosition += h * body.velocity;
+    const double turn = h * body.angularVelocity;
+    body.deltaAngle += turn;
+    const double c = body.deltaCos - turn * body.deltaSin;
+    const double s = body.deltaSin + turn * body.deltaCos;
+    const double length = std::sqrt(c * c + s * s);
+    body.deltaCos = c / length;
+    body.deltaSin = s / length;
+  }
+}
+
+// A contact that was closing faster than the threshold before the step, and was touched in it,
+// is made to separate at −e times that closing speed.
+void SoftStepSolver::applyRestitution() {
+  for (Constraint& constraint : constraints_) {
+    if (constraint.restitution == 0.0) continue;
+    SolverBody& a = bodies_[size_t(constraint.bodyA)];
+    SolverBody& b = bodies_[size_t(constraint.bodyB)];
+    for (int i = 0; i < constraint.pointCount; ++i) {
+      ConstraintPoint& cp = constraint.points[size_t(i)];
+      if (cp.relativeVelocity > -settings_.restitutionVelocityThreshold ||
+          cp.totalNormalImpulse == 0.0) {
+        continue;
+      }
+      const double vn =
+          (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(constraint.normal);
+      const double impulse = -cp.normalMass * (vn + constraint.restitution * cp.relativeVelocity);
+      const double total = std::max(cp.normalImpulse + impulse, 0.0);
+      const double change = total - cp.normalImpulse;
+      cp.normalImpulse = total;
+      cp.totalNormalImpulse += change;
+      applyImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
+    }
+  }
+}
+
+// The manifold keeps the impulse over the whole step (the last substep's times the substeps),
+// as every method reports it, and the friction state of each point.
+void SoftStepSolver::storeImpulses(const StepContext& context) const {
+  for (const Constraint& constraint : constraints_) {
+    Manifold& manifold = context.manifolds[size_t(constraint.manifold)];
+    for (int i = 0; i < constraint.pointCount; ++i) {
+      const ConstraintPoint& cp = constraint.points[size_t(i)];
+      ContactPoint& point = manifold.points[size_t(i)];
+      point.normalImpulse = cp.normalImpulse * settings_.substeps;
+      point.tangentImpulse = cp.tangentImpulse * settings_.substeps;
+      point.friction = frictionStateOf(cp.normalImpulse, cp.tangentImpulse, manifold.friction, 0.0);
+    }
+  }
+}
+
+void SoftStepSolver::finishBodies(const StepContext& context, double h) const {
+  for (size_t i = 0; i < context.bodies.size(); ++i) {
+    Body& body = context.bodies[i];
+    if (!body.isAwake()) continue;
+    const SolverBody& solverBody = bodies_[i];
+    body.position += solverBody.deltaPosition;
+    body.angle += solverBody.deltaAngle;
+    body.velocity = solverBody.velocity;
+    body.angularVelocity = solverBody.angularVelocity;
+    body.lastAcceleration = solverBody.velocityPerSubstep / h;
+    body.updateCache();
+  }
+}
+
+}  // namespace impulse2d

@@ -1,0 +1,277 @@
+// Soft step: the soft constraint is the spring-damper it stands for, relax removes the velocity
+// the bias added, the restitution pass gives the bounce, warm starting carries a stack.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "impulse2d/solvers/soft_step.h"
+#include "impulse2d/world.h"
+#include "solver_scenes.h"
+
+using namespace impulse2d;
+using namespace solvers;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// A disk of radius 0.5 and mass 1 whose lowest point is `height` above the ground (negative:
+/// overlapping), moving at `velocity`, under `gravity`. A disk's contact arm lies along the
+/// normal, so its contact's effective mass is the disk's mass.
+Scene softDisk(double height, double velocity, double gravity, double restitution = 0.0) {
+  Scene scene = groundScene("soft_step", 0.6);
+  scene.world.gravity = Vec2(0.0, -gravity);
+  BodyDef disk = unitBoxMaterial(0.6);
+  disk.shape = makeCircle(0.5);
+  disk.density = 1.0 / (kPi * 0.25);
+  disk.position = Vec2(0.0, 0.5 + height);
+  disk.velocity = Vec2(0.0, velocity);
+  disk.restitution = restitution;
+  scene.bodies.push_back(disk);
+  return scene;
+}
+
+/// The disk's overlap with the ground (m, > 0 overlapping).
+double overlapOf(const World& world) {
+  return 0.5 - world.bodies()[1].position.y();
+}
+
+}  // namespace
+
+TEST_CASE("softness: Box2D v3's coefficients, and the rigid limit at infinite stiffness",
+          "[soft_step][softness]") {
+  const double h = 1.0 / 240.0;
+  const double omega = 2.0 * kPi * 30.0;
+  const double a1 = 2.0 * 10.0 + h * omega;
+  const double a2 = h * omega * a1;
+  const Softness soft = makeSoftness(30.0, 10.0, h);
+  CHECK(soft.biasRate == Approx(omega / a1));
+  CHECK(soft.massScale == Approx(a2 / (1.0 + a2)));
+  CHECK(soft.impulseScale == Approx(1.0 / (1.0 + a2)));
+  const Softness stiff = makeSoftness(1e9, 10.0, h);
+  CHECK(stiff.biasRate == Approx(rigidSoftness(h).biasRate).epsilon(1e-6));
+  CHECK(stiff.massScale == Approx(1.0).epsilon(1e-6));
+  CHECK(stiff.impulseScale == Approx(0.0).margin(1e-12));
+}
+
+TEST_CASE("without relax a disk set on the ground rings like the spring-damper of the set hertz",
+          "[soft_step][spring]") {
+  // Dropped onto the spring from rest at zero overlap, the overlap p obeys
+  // p'' + 2ζω p' + ω² p = g: p = (g/ω²)(1 − e^(−ζωt)(cos ω_d t + ζω/ω_d sin ω_d t)).
+  constexpr double kHertz = 2.0;
+  constexpr double kDamping = 0.3;
+  Scene scene = softDisk(0.0, 0.0, kGravity);
+  SoftStepSettings& soft = scene.solverSettings.softStep;
+  soft.relax = false;
+  soft.contactHertz = kHertz;
+  soft.staticHertzFactor = 1.0;
+  soft.dampingRatio = kDamping;
+  auto world = buildWorld(scene);
+  const double omega = 2.0 * kPi * kHertz;
+  const double sag = kGravity / (omega * omega);
+  const double damped = omega * std::sqrt(1.0 - kDamping * kDamping);
+  for (int step = 1; step <= stepsIn(1.0); ++step) {
+    world->step();
+    const double t = step * kDt;
+    const double decay = std::exp(-kDamping * omega * t);
+    const double spring =
+        sag *
+        (1.0 - decay * (std::cos(damped * t) + kDamping * omega / damped * std::sin(damped * t)));
+    INFO("t = " << t);
+    // Implicit Euler in substeps of hω = 0.05 adds about hω/2 to the damping ratio and lags by
+    // a substep: a few per cent of the sag.
+    CHECK(overlapOf(*world) == Approx(spring).margin(0.05 * sag));
+  }
+}
+
+TEST_CASE("with relax the overdamped default creeps out at the spring's slow rate ω(ζ−√(ζ²−1))",
+          "[soft_step][spring][relax]") {
+  // Relax leaves no velocity, so each substep moves the overlap by h·massScale·biasRate of
+  // itself: the massless limit of the overdamped spring, whose slow mode decays at ω(ζ−√(ζ²−1)).
+  constexpr double kOverlap = 0.02;
+  Scene scene = softDisk(-kOverlap, 0.0, 0.0);
+  const SoftStepSettings& soft = scene.solverSettings.softStep;
+  auto world = buildWorld(scene);
+  const double hertz = soft.staticHertzFactor * soft.contactHertz;
+  const double h = kDt / soft.substeps;
+  const Softness softness = makeSoftness(hertz, soft.dampingRatio, h);
+  const double perSubstep = 1.0 - h * softness.massScale * softness.biasRate;
+  const double omega = 2.0 * kPi * hertz;
+  const double zeta = soft.dampingRatio;
+  const double slowRate = omega * (zeta - std::sqrt(zeta * zeta - 1.0));
+  CHECK(-std::log(perSubstep) / h == Approx(slowRate).epsilon(0.1));
+  for (int step = 1; step <= stepsIn(0.3); ++step) {
+    world->step();
+    INFO("step " << step);
+    CHECK(overlapOf(*world) ==
+          Approx(kOverlap * std::pow(perSubstep, soft.substeps * step)).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("a resting disk sags by g/ω², the spring's static deflection under its weight",
+          "[soft_step][spring]") {
+  auto world = buildWorld(softDisk(0.0, 0.0, kGravity));
+  runSteps(*world, stepsIn(2.0));
+  const SoftStepSettings soft;
+  const double omega = 2.0 * kPi * soft.staticHertzFactor * soft.contactHertz;
+  CHECK(overlapOf(*world) == Approx(kGravity / (omega * omega)).epsilon(0.02));
+}
+
+TEST_CASE("relax removes the velocity the bias added; without it a deep overlap throws the body",
+          "[soft_step][relax]") {
+  constexpr double kOverlap = 0.2;
+  Scene scene = softDisk(-kOverlap, 0.0, kGravity);
+  const auto highestLift = [&] {
+    auto world = buildWorld(scene);
+    double lift = -1.0;
+    for (int step = 0; step < stepsIn(2.0); ++step) {
+      world->step();
+      lift = std::max(lift, -overlapOf(*world));
+    }
+    return lift;
+  };
+  const double withRelax = highestLift();
+  scene.solverSettings.softStep.relax = false;
+  const double withoutRelax = highestLift();
+  WARN("figure: highest lift above the ground with relax " << withRelax << " m, without "
+                                                           << withoutRelax << " m");
+  CHECK(withRelax < 1e-3);
+  CHECK(withoutRelax > 0.01);
+}
+
+TEST_CASE("restitution: a closing contact leaves at e times the closing speed before the step",
+          "[soft_step][restitution]") {
+  constexpr double kSpeed = 5.0;
+  constexpr double kRestitution = 0.5;
+  Scene scene = softDisk(0.5, -kSpeed, 0.0, kRestitution);
+  scene.world.speculativeContacts = true;
+  SECTION("a fast disk bounces at e × its closing speed") {
+    auto world = buildWorld(scene);
+    runSteps(*world, stepsIn(0.5));
+    CHECK(world->bodies()[1].velocity.y() == Approx(kRestitution * kSpeed).epsilon(1e-6));
+  }
+  SECTION("without the restitution pass a soft contact does not bounce") {
+    scene.solverSettings.softStep.restitution = false;
+    auto world = buildWorld(scene);
+    runSteps(*world, stepsIn(0.5));
+    CHECK(std::abs(world->bodies()[1].velocity.y()) < 0.05 * kRestitution * kSpeed);
+  }
+  SECTION("under the threshold nothing bounces") {
+    scene.bodies[1].velocity.y() =
+        -0.5 * scene.solverSettings.softStep.restitutionVelocityThreshold;
+    auto world = buildWorld(scene);
+    runSteps(*world, stepsIn(2.0));
+    CHECK(std::abs(world->bodies()[1].velocity.y()) < 1e-3);
+  }
+}
+
+TEST_CASE("a dropped ball of restitution e rises to e² times its drop height",
+          "[soft_step][restitution]") {
+  constexpr double kDrop = 2.0;
+  constexpr double kRestitution = 0.8;
+  Scene scene = softDisk(kDrop, 0.0, kGravity, kRestitution);
+  scene.world.speculativeContacts = true;
+  auto world = buildWorld(scene);
+  double apex = 0.0;
+  bool bounced = false;
+  for (int step = 0; step < stepsIn(1.5); ++step) {
+    world->step();
+    const double vy = world->bodies()[1].velocity.y();
+    bounced = bounced || vy > 0.0;
+    if (bounced) apex = std::max(apex, -overlapOf(*world));
+  }
+  // The pass bounces at e times the closing speed at the start of the landing step, which may
+  // be up to g·dt below the speed at impact, and semi-implicit Euler in substeps of h rises
+  // v·h/2 short of v²/2g: the apex lies between e²(v − g·dt)²/2g − e·v·h/2 and e²h.
+  const double impact = std::sqrt(2.0 * kGravity * kDrop);
+  const double slowest = kRestitution * (impact - kGravity * kDt);
+  const double h = kDt / scene.solverSettings.softStep.substeps;
+  CHECK(apex > slowest * slowest / (2.0 * kGravity) - kRestitution * impact * h / 2.0 - 1e-3);
+  CHECK(apex < kRestitution * kRestitution * kDrop + 1e-3);
+}
+
+TEST_CASE("10-box stack: warm started soft contacts carry the weight above within 2%",
+          "[soft_step][stack][warm_starting]") {
+  constexpr int kBoxes = 10;
+  auto world = buildWorld(stackScene("soft_step", kBoxes, 0.6));
+  runSteps(*world, stepsIn(2.0));
+  for (int level = 0; level < kBoxes; ++level) {
+    const double weightAbove = (kBoxes - level) * kBoxMass * kGravity;
+    INFO("level " << level);
+    CHECK(contactForce(*world, level, level + 1) == Approx(weightAbove).epsilon(0.02));
+  }
+}
+
+TEST_CASE("free fall is semi-implicit Euler in the solver's substeps", "[soft_step][integration]") {
+  // After n steps of N substeps h = dt/N: y = y0 + g·h²·nN(nN + 1)/2, exactly.
+  Scene scene = softDisk(10.0, 0.0, kGravity);
+  auto world = buildWorld(scene);
+  constexpr int kSteps = 30;
+  runSteps(*world, kSteps);
+  const int substeps = kSteps * scene.solverSettings.softStep.substeps;
+  const double h = kDt / scene.solverSettings.softStep.substeps;
+  const double fallen = kGravity * h * h * substeps * (substeps + 1) / 2.0;
+  CHECK(world->bodies()[1].position.y() == Approx(10.5 - fallen).epsilon(1e-12));
+}
+
+TEST_CASE("heavy on light: each point sinks by its load over m_eff·ω², the spring's deflection",
+          "[soft_step][spring][mass_ratio]") {
+  // A box r times denser on a unit box on the ground. At rest each of the two corner points of
+  // the pair carries half the heavy box's weight, Mg/2, on a spring of stiffness m_eff·ω², where
+  // 1/m_eff = 1/m + 1/M + (½)²/I_m + (½)²/I_M = 2.5(1 + 1/r)/m for unit boxes (I = m/6). The
+  // sag grows with the mass ratio: the reason soft contacts of a fixed hertz give way under a
+  // heavy load (docs/soft-step.md).
+  constexpr double kRatio = 10.0;
+  Scene scene = stackScene("soft_step", 2, 0.6);
+  scene.bodies.back().density = kRatio;
+  auto world = buildWorld(scene);
+  runSteps(*world, stepsIn(3.0));
+  const SoftStepSettings soft;
+  const double omega = 2.0 * kPi * soft.contactHertz;
+  const double effectiveMass = kBoxMass / (2.5 * (1.0 + 1.0 / kRatio));
+  const double load = kRatio * kBoxMass * kGravity / 2.0;
+  const double sag = load / (effectiveMass * omega * omega);
+  for (const Manifold& manifold : world->manifolds()) {
+    if (manifold.bodyA != 1) continue;
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      CHECK(manifold.points[size_t(i)].penetration == Approx(sag).epsilon(0.03));
+    }
+  }
+}
+
+TEST_CASE("a tall stack stands on stiff enough springs: 20 boxes buckle at 30 Hz, stand at 60 Hz",
+          "[soft_step][stack][stability]") {
+  // A column on springs of rotational stiffness K per joint buckles once the weight's
+  // overturning moment outgrows them; K grows with ω², so 20 boxes need about 40 Hz
+  // (docs/soft-step.md).
+  constexpr int kBoxes = 20;
+  Scene scene = stackScene("soft_step", kBoxes, 0.6);
+  const auto topTravel = [&] {
+    auto world = buildWorld(scene);
+    runSteps(*world, stepsIn(2.0));
+    const Vec2 settled = world->bodies().back().position;
+    runSteps(*world, stepsIn(8.0));
+    return (world->bodies().back().position - settled).norm();
+  };
+  CHECK(topTravel() > 0.5);  // toppled
+  scene.solverSettings.softStep.contactHertz = 60.0;
+  CHECK(topTravel() < 0.05);  // stands, creeping by a few centimetres in 8 s
+}
+
+TEST_CASE("a 40-box stack stands with 16 substeps of 240 Hz contacts", "[soft_step][stack]") {
+  constexpr int kBoxes = 40;
+  Scene scene = stackScene("soft_step", kBoxes, 0.6);
+  scene.solverSettings.softStep.substeps = 16;
+  scene.solverSettings.softStep.contactHertz = 240.0;
+  auto world = buildWorld(scene);
+  runSteps(*world, stepsIn(1.0));
+  const Vec2 settled = world->bodies().back().position;
+  double largestMove = 0.0;
+  for (int step = 0; step < stepsIn(9.0); ++step) {
+    world->step();
+    largestMove = std::max(largestMove, (world->bodies().back().position - settled).norm());
+  }
+  WARN("figure: 40-box stack, 16 substeps at 240 Hz: top moves " << largestMove
+                                                                 << " m from 1 s to 10 s");
+  CHECK(largestMove < 0.01);
+}
