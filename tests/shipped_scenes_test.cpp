@@ -65,8 +65,9 @@ TEST_CASE(
     "what it shows",
     "[scenes][shipped]") {
   std::set<std::string> expected = {
-      "resting_box",      "jitter",       "bouncing_ball", "incline_holds", "incline_slides",
-      "incline_friction", "rolling_disk", "spinning_disk", "stack",         "pyramid"};
+      "resting_box",   "pushed_box",     "jitter",           "bouncing_ball",
+      "incline_holds", "incline_slides", "incline_friction", "rolling_disk",
+      "spinning_disk", "stack",          "pyramid"};
   expected.insert(kBenchmarkScenes.begin(), kBenchmarkScenes.end());
   std::set<std::string> found;
   for (const auto& entry :
