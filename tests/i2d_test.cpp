@@ -363,9 +363,10 @@ TEST_CASE("compare writes the solvers' frames side by side, labelled, and a shee
   CHECK(outcome.out.find("panel        box2d: solver box2d") != std::string::npos);
   const std::string frames = directory / "bouncing_ball";
   CHECK(filesStartingWith(frames, "bouncing_ball_compare") ==
-        std::vector<std::string>{
-            "bouncing_ball_compare_00000.png", "bouncing_ball_compare_00001.png",
-            "bouncing_ball_compare_00002.png", "bouncing_ball_compare_sheet.png"});
+        std::vector<std::string>{"bouncing_ball_compare.html", "bouncing_ball_compare_00000.png",
+                                 "bouncing_ball_compare_00001.png",
+                                 "bouncing_ball_compare_00002.png",
+                                 "bouncing_ball_compare_sheet.png"});
   // Two 800 x 600 panels with their legends, spacing around each, a label bar above.
   const impulse2d::render::RenderSettings settings;
   CHECK(pngSize(frames + "/bouncing_ball_compare_00002.png") ==
@@ -385,7 +386,8 @@ TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compa
   CHECK(outcome.exitCode == 0);
   CHECK(outcome.out.find("panel        removal on: solver micro") != std::string::npos);
   CHECK(outcome.out.find("panel        removal off: solver micro") != std::string::npos);
-  CHECK(filesStartingWith(directory / "jitter", "jitter_compare").size() == 2 + 1);
+  // Two frames, the sheet and the viewer page.
+  CHECK(filesStartingWith(directory / "jitter", "jitter_compare").size() == 2 + 1 + 1);
 
   const Outcome badPanel = i2d("compare " + kScenes + "jitter.toml --frames " + (directory / "") +
                                " --panel 'off: solver.no_such_key=1'");
@@ -417,7 +419,8 @@ TEST_CASE("frame options without --frames, and bad overlays, are usage errors",
       {"compare " + scene + " --solvers micro", "error: i2d compare needs --frames DIR\n"},
       {"run " + scene + " --hide arrows",
        "error: unknown overlay 'arrows' for --hide (known: all, contact_normals, contact_points, "
-       "friction_impulses, heads_up, normal_impulses, rotation_marks, velocities)\n"},
+       "friction_gauges, friction_impulses, heads_up, legend, normal_impulses, rotation_marks, "
+       "velocities)\n"},
   };
   for (const auto& [arguments, message] : cases) {
     INFO("i2d " << arguments);
