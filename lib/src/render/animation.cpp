@@ -143,8 +143,8 @@ std::filesystem::path writeGif(const FrameWriter& writer, double framesPerSecond
   gif.close();
   // giflib creates the file readable by its owner only; a GIF is for sharing.
   using std::filesystem::perms;
-  std::filesystem::permissions(path, perms::owner_read | perms::owner_write | perms::group_read |
-                                         perms::others_read);
+  std::filesystem::permissions(
+      path, perms::owner_read | perms::owner_write | perms::group_read | perms::others_read);
   return path;
 }
 

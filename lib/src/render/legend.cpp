@@ -125,10 +125,13 @@ int legendHeight(const RenderSettings& settings, int frameWidth) {
 double roundForce(double force) {
   if (!(force > 0.0) || !std::isfinite(force)) return 1.0;
   const double decade = std::pow(10.0, std::floor(std::log10(force)));
-  for (const double step : {5.0, 2.0, 1.0}) {
-    if (step * decade <= force) return step * decade;
+  double nearest = decade;
+  for (const double step : {2.0, 5.0, 10.0}) {
+    if (std::abs(std::log(step * decade / force)) < std::abs(std::log(nearest / force))) {
+      nearest = step * decade;
+    }
   }
-  return decade;
+  return nearest;
 }
 
 void drawLegend(Canvas& canvas, int top, const DrawnKinds& drawn, const ForceScale& forces,

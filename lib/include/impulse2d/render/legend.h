@@ -13,7 +13,7 @@ namespace impulse2d::render {
 /// Height in pixels of the legend strip of a frame `frameWidth` pixels wide: two text lines.
 int legendHeight(const RenderSettings& settings, int frameWidth);
 
-/// The largest 1, 2 or 5 times a power of ten not above `force` (N): the sample arrow's force.
+/// The 1, 2 or 5 times a power of ten nearest `force` (N, by ratio): the sample arrow's force.
 double roundForce(double force);
 
 /// The legend strip from pixel row `top` to the bottom of the canvas.

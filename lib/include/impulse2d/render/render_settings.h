@@ -119,6 +119,10 @@ struct RenderSettings {
   int sheetThumbnails = 12;
   int sheetColumns = 4;
   int sheetThumbnailWidth = 240;
+  /// Thumbnails are at least this fraction of the frame's width, so the text of a wide frame (a
+  /// comparison's panels side by side) reads as well as an 800-pixel frame's at 240 pixels; the
+  /// sheet then has fewer columns, keeping its width near sheetColumns × sheetThumbnailWidth.
+  double sheetThumbnailScale = 0.3;
   /// Gap between thumbnails, and between panels of a comparison.
   int spacing = 4;
 };
