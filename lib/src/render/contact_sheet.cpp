@@ -25,7 +25,8 @@ SheetLayout contactSheetLayout(int frameCount, int frameWidth, int frameHeight,
   const int shown = int(layout.frames.size());
   layout.thumbnailWidth = std::max(settings.sheetThumbnailWidth,
                                    int(std::lround(settings.sheetThumbnailScale * frameWidth)));
-  const int fitting = settings.sheetColumns * settings.sheetThumbnailWidth / layout.thumbnailWidth;
+  const int fitting = int(std::lround(double(settings.sheetColumns) * settings.sheetThumbnailWidth /
+                                      layout.thumbnailWidth));
   layout.columns = std::max(1, std::min(fitting, shown));
   layout.rows = (shown + layout.columns - 1) / layout.columns;
   layout.thumbnailHeight =
