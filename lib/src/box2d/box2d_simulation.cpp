@@ -93,6 +93,7 @@ Box2dSimulation::Box2dSimulation(const Scene& scene, const Box2dOptions& options
       iterations_(scene.solverSettings.box2d),
       world_(std::make_unique<Box2dWorld>(scene.world.gravity)),
       bodies_(buildBodies(scene)) {
+  settings_.substeps = 1;  // Box2D takes one step per dt, whatever the scene asks of our world
   world_->world.SetAllowSleeping(options.allowSleeping);
   world_->world.SetContinuousPhysics(options.continuousPhysics);
   const float restitutionThreshold =

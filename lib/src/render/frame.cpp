@@ -339,9 +339,11 @@ FrameRenderer::FrameRenderer(const Camera& camera, std::string scene,
                              const RenderSettings& settings)
     : camera_(camera), scene_(std::move(scene)), settings_(settings) {}
 
+// A world with substeps reports the last substep's impulses, taken over dt / substeps.
 void FrameRenderer::fitForces(const Simulation& simulation) {
-  forces_ = fitForceScale(simulation.bodies(), simulation.settings().gravity,
-                          simulation.settings().dt, camera_, settings_);
+  const WorldSettings& world = simulation.settings();
+  forces_ = fitForceScale(simulation.bodies(), world.gravity,
+                          world.dt / std::max(1, world.substeps), camera_, settings_);
 }
 
 const Canvas& FrameRenderer::draw(const Simulation& simulation) {

@@ -109,7 +109,8 @@ class FrameRenderer {
   /// The frame of a simulation as it stands. The first call fits the run's force scale to the
   /// simulation's bodies, gravity and dt, unless fitForces was called.
   const Canvas& draw(const Simulation& simulation);
-  /// Fits the force scale every later frame uses (fitForceScale).
+  /// Fits the force scale every later frame uses (fitForceScale), with the substep's length as
+  /// the time an impulse acts (a world's manifolds hold its last substep's impulses).
   void fitForces(const Simulation& simulation);
   const ForceScale& forces() const { return forces_; }
   /// The frame of bodies and manifolds with the heads-up lines given (none: no heads-up).
