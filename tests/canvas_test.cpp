@@ -143,12 +143,13 @@ TEST_CASE("A fitted camera shows the dynamic bodies and the ground under them", 
   const Camera camera = fitCamera(simulation.bodies(), ViewDef{}, settings);
   const Vec2 boxTop = camera.toPixels(Vec2(0.5, 1.0));
   const Vec2 inGround = camera.toPixels(Vec2(0.0, -0.2));
-  CHECK(boxTop.y() >= headsUpHeight(settings));  // below the heads-up line
+  const double headsUp = 2.0 * headsUpHeight(settings, camera.width);
+  CHECK(boxTop.y() >= headsUp);  // below the two heads-up lines
   CHECK(inGround.y() < camera.height);
   // The 10 m ground is cut to the box's surroundings (a quarter of its 1 m size either side:
   // staticFitReach), so the box fills most of the height rather than a tenth of the width.
   const double boxHeight = camera.toPixels(Vec2(0.0, 0.0)).y() - boxTop.y();
-  CHECK(boxHeight > 0.6 * (camera.height - headsUpHeight(settings)));
+  CHECK(boxHeight > 0.6 * (camera.height - headsUp));
 
   ViewDef view;
   view.centre = Vec2(3.0, 4.0);
@@ -175,6 +176,8 @@ TEST_CASE("Bodies are classed static, flying, resting, touching or sliding", "[f
   CHECK(states()[1] == BodyState::Sliding);
   simulation.bodyList[1].velocity = Vec2::Zero();
   simulation.manifoldList[0].points[1].friction = FrictionState::Dynamic;
+  CHECK(states()[1] == BodyState::Resting);  // one point of two at its limit: the pair holds
+  simulation.manifoldList[0].points[0].friction = FrictionState::Dynamic;
   CHECK(states()[1] == BodyState::Sliding);
 }
 
@@ -194,6 +197,7 @@ TEST_CASE("A frame colours each body by its state; overlays can be turned off", 
   Overlays& show = settings.overlays;
   show.rotationMarks = show.contactPoints = show.contactNormals = false;
   show.normalImpulses = show.frictionImpulses = show.velocities = show.headsUp = false;
+  show.frictionGauges = show.legend = false;
   FrameRenderer plain(camera, "box", settings);
   const Canvas& bare = plain.draw(simulation);
   const std::vector<Color> allowed{settings.colours.background, settings.colours.restingBody,

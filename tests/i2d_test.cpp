@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "impulse2d/render/contact_sheet.h"
+#include "impulse2d/render/legend.h"
 #include "impulse2d/render/panels.h"
 #include "impulse2d/render/png.h"
 #include "impulse2d/render/video.h"
@@ -278,10 +279,11 @@ TEST_CASE("run --frames writes a frame every K-th step, the last, and a sheet", 
         std::vector<std::string>{"bouncing_ball_00000.png", "bouncing_ball_00001.png",
                                  "bouncing_ball_00002.png", "bouncing_ball_00003.png",
                                  "bouncing_ball_sheet.png"});
-  // The scene's [render] table asks for 800 x 600.
-  CHECK(pngSize(frames + "/bouncing_ball_00003.png") == std::pair<int, int>(800, 600));
+  // The scene's [render] table asks for 800 x 600; the legend strip goes under it.
+  const int height = 600 + impulse2d::render::legendHeight({}, 800);
+  CHECK(pngSize(frames + "/bouncing_ball_00003.png") == std::pair<int, int>(800, height));
   const impulse2d::render::SheetLayout sheet =
-      impulse2d::render::contactSheetLayout(4, 800, 600, impulse2d::render::RenderSettings{});
+      impulse2d::render::contactSheetLayout(4, 800, height, impulse2d::render::RenderSettings{});
   CHECK(pngSize(frames + "/bouncing_ball_sheet.png") ==
         std::pair<int, int>(sheet.width, sheet.height));
   CHECK(outcome.out.find("sheet        " + frames + "/bouncing_ball_sheet.png") !=
@@ -361,15 +363,17 @@ TEST_CASE("compare writes the solvers' frames side by side, labelled, and a shee
   CHECK(outcome.out.find("panel        box2d: solver box2d") != std::string::npos);
   const std::string frames = directory / "bouncing_ball";
   CHECK(filesStartingWith(frames, "bouncing_ball_compare") ==
-        std::vector<std::string>{
-            "bouncing_ball_compare_00000.png", "bouncing_ball_compare_00001.png",
-            "bouncing_ball_compare_00002.png", "bouncing_ball_compare_sheet.png"});
-  // Two 800 x 600 panels, spacing around each, a label bar above.
+        std::vector<std::string>{"bouncing_ball_compare.html", "bouncing_ball_compare_00000.png",
+                                 "bouncing_ball_compare_00001.png",
+                                 "bouncing_ball_compare_00002.png",
+                                 "bouncing_ball_compare_sheet.png"});
+  // Two 800 x 600 panels with their legends, spacing around each, a label bar above.
   const impulse2d::render::RenderSettings settings;
   CHECK(pngSize(frames + "/bouncing_ball_compare_00002.png") ==
-        std::pair<int, int>(
-            2 * 800 + 3 * settings.spacing,
-            600 + impulse2d::render::panelLabelHeight(settings) + 2 * settings.spacing));
+        std::pair<int, int>(2 * 800 + 3 * settings.spacing,
+                            600 + impulse2d::render::legendHeight(settings, 800) +
+                                impulse2d::render::panelLabelHeight(settings) +
+                                2 * settings.spacing));
 }
 
 TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compare]") {
@@ -382,7 +386,8 @@ TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compa
   CHECK(outcome.exitCode == 0);
   CHECK(outcome.out.find("panel        removal on: solver micro") != std::string::npos);
   CHECK(outcome.out.find("panel        removal off: solver micro") != std::string::npos);
-  CHECK(filesStartingWith(directory / "jitter", "jitter_compare").size() == 2 + 1);
+  // Two frames, the sheet and the viewer page.
+  CHECK(filesStartingWith(directory / "jitter", "jitter_compare").size() == 2 + 1 + 1);
 
   const Outcome badPanel = i2d("compare " + kScenes + "jitter.toml --frames " + (directory / "") +
                                " --panel 'off: solver.no_such_key=1'");
@@ -414,7 +419,8 @@ TEST_CASE("frame options without --frames, and bad overlays, are usage errors",
       {"compare " + scene + " --solvers micro", "error: i2d compare needs --frames DIR\n"},
       {"run " + scene + " --hide arrows",
        "error: unknown overlay 'arrows' for --hide (known: all, contact_normals, contact_points, "
-       "friction_impulses, heads_up, normal_impulses, rotation_marks, velocities)\n"},
+       "friction_gauges, friction_impulses, heads_up, legend, normal_impulses, rotation_marks, "
+       "velocities)\n"},
   };
   for (const auto& [arguments, message] : cases) {
     INFO("i2d " << arguments);

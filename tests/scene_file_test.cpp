@@ -248,7 +248,7 @@ TEST_CASE("each kind of bad input is one error at its place", "[scene-file][erro
     CHECK(errorOf(ball + "fricton = 0.5\n") ==
           "bad.toml:4:1: unknown key 'fricton' in [[body]] (known: name, type, shape, size, "
           "radius, vertices, position, angle_deg, velocity, angular_velocity_deg, density, "
-          "friction, restitution)");
+          "friction, restitution, force, force_rate, force_point, torque)");
     MicroCollisionSettings micro;
     CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nwarm_starting = true\n" + ball) ==
           "bad.toml:4:1: unknown key 'warm_starting' in [solver] for solver 'micro' (known: " +

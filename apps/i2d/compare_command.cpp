@@ -9,8 +9,8 @@
 #include "frame_output.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/panels.h"
-#include "impulse2d/render/video.h"
 #include "impulse2d/scene/scene_file.h"
+#include "plots.h"
 #include "scene_setup.h"
 
 namespace i2d {
@@ -20,12 +20,13 @@ using impulse2d::SceneFile;
 using impulse2d::Simulation;
 using namespace impulse2d::render;
 
-/// One panel's run: its scene, its simulation and the renderer that draws it.
+/// One panel's run: its scene, its simulation, the renderer that draws it and its figures.
 struct PanelRun {
   std::string label;
   SceneFile scene;
   std::unique_ptr<Simulation> simulation;
   std::unique_ptr<FrameRenderer> renderer;
+  std::vector<StepFigures> figures;
 };
 
 /// The panel's scene: the file, then --solver or the panel's solver, the common --sets, the
@@ -44,7 +45,7 @@ std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSet
   const Camera camera = sceneCamera(file, settings);  // --set changes no body: one view for all
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {
-    PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, nullptr};
+    PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, nullptr, {}};
     run.simulation = impulse2d::makeSimulation(run.scene);
     run.renderer = std::make_unique<FrameRenderer>(camera, run.scene.name, settings);
     runs.push_back(std::move(run));
@@ -67,6 +68,38 @@ void stepPanels(std::vector<PanelRun>& runs) {
                        std::to_string(run.simulation->stepCount()));
     }
   }
+}
+
+void measurePanels(std::vector<PanelRun>& runs) {
+  for (PanelRun& run : runs) run.figures.push_back(measureStep(*run.simulation));
+}
+
+/// The viewer's table: each panel's total energy, contact points and largest penetration.
+FigureTable panelTable(const std::vector<PanelRun>& runs, const std::vector<long>& frameSteps) {
+  FigureTable table;
+  for (const PanelRun& run : runs) {
+    for (const char* figure :
+         {" total energy (J)", " contact points", " largest penetration (m)"}) {
+      table.columns.push_back(run.label + figure);
+    }
+  }
+  for (const long step : frameSteps) {
+    std::vector<double> row;
+    for (const PanelRun& run : runs) {
+      const FigureTable one = figureTable(run.figures, {step});
+      if (one.rows.empty()) continue;
+      row.insert(row.end(), {one.rows[0][3], one.rows[0][4], one.rows[0][5]});
+    }
+    table.rows.push_back(row);
+  }
+  return table;
+}
+
+std::vector<std::string> plotPanels(const std::string& directory, const std::string& name,
+                                    const std::vector<PanelRun>& runs) {
+  std::vector<PlotSeries> series;
+  for (const PanelRun& run : runs) series.push_back({run.label, run.figures});
+  return writeRunPlots(directory, name, series);
 }
 
 void writePanels(std::vector<PanelRun>& runs, FrameWriter& writer, const RenderSettings& settings) {
@@ -92,6 +125,7 @@ void printPanelSummary(const std::vector<PanelRun>& runs) {
 
 int compareCommand(const CompareOptions& options) {
   checkVideoPossible(options.frames);
+  if (options.plots) preparePlotDirectory(*options.plots);
   const RenderSettings settings = renderSettings(options.frames);
   std::vector<PanelRun> runs = startPanels(options, settings);
   const SceneFile& first = runs.front().scene;
@@ -101,14 +135,21 @@ int compareCommand(const CompareOptions& options) {
             << " steps)\n";
   for (long step = 0; step <= first.steps; ++step) {
     if (step > 0) stepPanels(runs);
+    measurePanels(runs);
     if (isRecorded(step, first.steps, options.every)) writePanels(runs, writer, settings);
   }
   writer.writeContactSheet();
   printPanelSummary(runs);
   for (const std::string& line : describeFrames(writer)) std::cout << line << "\n";
-  if (options.frames.video) {
-    std::cout << "video        "
-              << writeVideo(writer, 1.0 / (first.world.dt * options.every)).string() << "\n";
+  for (const std::string& line :
+       writeFrameExtras(options.frames, writer, first.name, 1.0 / (first.world.dt * options.every),
+                        panelTable(runs, writer.steps()))) {
+    std::cout << line << "\n";
+  }
+  if (options.plots) {
+    for (const std::string& line : plotPanels(*options.plots, comparePrefix(first.name), runs)) {
+      std::cout << line << "\n";
+    }
   }
   return kSuccess;
 }

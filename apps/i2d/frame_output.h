@@ -7,9 +7,11 @@
 
 #include "impulse2d/render/frame.h"
 #include "impulse2d/render/frame_writer.h"
+#include "impulse2d/render/viewer.h"
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/simulation.h"
 #include "options.h"
+#include "run_figures.h"
 
 namespace i2d {
 
@@ -20,8 +22,16 @@ impulse2d::render::RenderSettings renderSettings(const FrameOptions& options);
 impulse2d::render::Camera sceneCamera(const impulse2d::SceneFile& scene,
                                       const impulse2d::render::RenderSettings& settings);
 
-/// Throws RunFailure before a run when --video was asked for and ffmpeg is not on PATH.
+/// Throws RunFailure before a run when --video or --animation mp4 was asked for and ffmpeg is
+/// not on PATH.
 void checkVideoPossible(const FrameOptions& options);
+
+/// The video, animation and viewer page of written frames, as asked for; returns summary lines.
+/// The viewer is always written; `figures` fills its table.
+std::vector<std::string> writeFrameExtras(const FrameOptions& options,
+                                          const impulse2d::render::FrameWriter& writer,
+                                          const std::string& scene, double framesPerSecond,
+                                          const impulse2d::render::FigureTable& figures);
 
 /// True for the steps a run records: every K-th, and the last.
 bool isRecorded(long step, long lastStep, int every);
@@ -37,13 +47,15 @@ class FrameRecorder {
 
   /// Draws and writes the frame of the simulation's current step if the run records it.
   void record(const impulse2d::Simulation& simulation, long lastStep);
-  /// Writes the contact sheet, and the video when asked; returns the summary lines.
-  std::vector<std::string> finish(double dt);
+  /// Writes the contact sheet, the viewer page (its table from `figures`, by step) and the
+  /// video or animation when asked; returns the summary lines.
+  std::vector<std::string> finish(double dt, const std::vector<StepFigures>& figures);
 
  private:
   impulse2d::render::FrameRenderer renderer_;
   impulse2d::render::FrameWriter writer_;
-  bool video_ = false;
+  FrameOptions options_;
+  std::string scene_;
 };
 
 }  // namespace i2d

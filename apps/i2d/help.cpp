@@ -17,7 +17,8 @@ usage:
   i2d COMMAND --help            the options of one command
 
 SCENE is a TOML scene file (docs/scene-format.md); demos/scenes/ holds one per lecture concept.
-The solvers are micro, sequential, reference and box2d (Box2D 2.4, the behaviour reference).
+The solvers are micro, sequential, soft_step, reference and box2d (Box2D 2.4, the behaviour
+reference).
 
 examples:
   i2d run demos/scenes/bouncing_ball.toml --csv ball.csv
@@ -58,10 +59,18 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --csv FILE            write the trajectory; FILE appears only when complete
   --every K             CSV rows and frames every K-th step (K >= 1), plus step 0 and the last
   --frames DIR          write PNG frames DIR/<scene>/<scene>_00000.png, _00001.png, ... (one
-                        per recorded step, numbered without gaps) and the contact sheet
-                        DIR/<scene>/<scene>_sheet.png; DIR's parent must exist
+                        per recorded step, numbered without gaps), the contact sheet
+                        DIR/<scene>/<scene>_sheet.png and the viewer page
+                        DIR/<scene>/index.html (open it in a browser: slider, arrow keys,
+                        each frame's figures); DIR's parent must exist
   --video               also write DIR/<scene>/<scene>.mp4 in real time (needs --frames and
                         ffmpeg on PATH)
+  --animation KIND      also write one file of the frames, in real time: gif (always
+                        possible, DIR/<scene>/<scene>.gif) or mp4 (needs ffmpeg on PATH)
+  --plots DIR           gnuplot PNGs of the run against time: DIR/<scene>_kinetic.png,
+                        _potential.png, _total.png (energy), _contacts.png (contact points),
+                        _penetration.png (largest); with --trace-step, the velocity error each
+                        solver event of the step removes, DIR/<scene>_stepNNNNN_velocity_error.png
   --trace-step N        with --frames: run to step N (N >= 1) and draw one frame per solver
                         event of that step, DIR/<scene>/<scene>_stepNNNNN_00000.png, ..., and
                         its sheet <scene>_stepNNNNN_sheet.png; box2d cannot be traced
@@ -73,13 +82,16 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --no-overlays         frames show the bodies in their state colours only
   --hide LIST           turn these overlays off, LIST a comma-separated list of
                         rotation_marks, contact_points, contact_normals, normal_impulses,
-                        friction_impulses, velocities, heads_up, or all
+                        friction_impulses, velocities, heads_up, friction_gauges, legend,
+                        or all
   --show LIST           turn these overlays on (velocities is off by default); the switches
                         apply in the order given: --no-overlays --show normal_impulses
 
-frames: body colours say what a body does: grey static, sky blue flying, green resting,
-purple touching (rolling, bouncing), orange sliding. Blue arrows are normal impulses, purple
-and crimson arrows friction impulses that held (static) and slid (dynamic).
+frames: each frame's legend strip says what its colours and arrows mean. Body colours: grey
+static, sky blue flying, green resting, purple touching (rolling, bouncing), orange sliding.
+Arrows are contact forces (impulse / dt, N) at a scale fitted per run and written in the legend:
+blue normal, purple friction that held (static), crimson friction on its limit (dynamic). The
+bar under each contact is its friction gauge, |friction| / (mu normal), red when full.
 
 CSV: the header is exactly
   step,t,body,x,y,angle_rad,vx,vy,omega_rad_s
@@ -93,7 +105,8 @@ If a body's state becomes non-finite the run stops with
 and exit code 1, keeping the CSV rows, frames and sheet of the steps before.
 
 exit codes: 0 success, 1 failure while running (non-finite state, unwritable file or frame
-directory, --video without ffmpeg), 2 bad command line, 3 invalid scene.
+directory or plot directory, --video or --animation mp4 without ffmpeg), 2 bad command line,
+3 invalid scene.
 )";
 
 const char* const kCompareHelp =
@@ -122,8 +135,10 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --solver NAME         the solver of every --panel panel, instead of the scene's
   --set SECTION.KEY=VALUE
                         a change for every panel, applied before the panel's own
-  --video, --no-overlays, --hide LIST, --show LIST
-                        as for i2d run
+  --video, --animation KIND, --no-overlays, --hide LIST, --show LIST
+                        as for i2d run; the viewer page is DIR/<scene>/<scene>_compare.html
+  --plots DIR           the panels' figures overlaid, one curve per panel:
+                        DIR/<scene>_compare_kinetic.png, ... as for i2d run
 
 Each panel's scene is: the file, --solver (or the panel's solver), each --set, the panel's
 changes, then --steps and --dt.

@@ -122,6 +122,8 @@ const std::map<std::string, bool Overlays::*>& overlayFields() {
       {"friction_impulses", &Overlays::frictionImpulses},
       {"velocities", &Overlays::velocities},
       {"heads_up", &Overlays::headsUp},
+      {"friction_gauges", &Overlays::frictionGauges},
+      {"legend", &Overlays::legend},
   };
   return fields;
 }
@@ -203,6 +205,12 @@ void addFrameHandlers(Handlers& handlers, FrameOptions& options, int& every) {
     every = parseInteger(value, "--every", 1);
   };
   handlers.switches["--video"] = [&] { options.video = true; };
+  handlers.options["--animation"] = [&](const std::string& value) {
+    if (value != "gif" && value != "mp4") {
+      throw UsageError("unknown animation kind '" + value + "' for --animation (known: gif, mp4)");
+    }
+    options.animation = value;
+  };
   handlers.switches["--no-overlays"] = [&] {
     switchOverlays(options.overlays, "all", false, "--no-overlays");
   };
@@ -251,17 +259,21 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
   handlers.options["--error-vs-reference"] = [&](const std::string& value) {
     options.errorVsReferencePath = value;
   };
+  handlers.options["--plots"] = [&](const std::string& value) { options.plots = value; };
   parse(arguments, "run", handlers, options.scene.scenePath);
   if (options.errorVsReferencePath &&
-      (options.csvPath || options.frames.directory || options.traceStep)) {
+      (options.csvPath || options.frames.directory || options.traceStep || options.plots)) {
     throw UsageError(
-        "--error-vs-reference writes its own CSV only; leave out --csv, --frames "
-        "and --trace-step");
+        "--error-vs-reference writes its own CSV only; leave out --csv, --frames, "
+        "--trace-step and --plots");
   }
   if (options.frames.video) requireFrames(options.frames, "--video");
+  if (options.frames.animation) requireFrames(options.frames, "--animation");
   if (options.traceStep) requireFrames(options.frames, "--trace-step");
-  if (options.traceStep && (options.csvPath || options.frames.video)) {
-    throw UsageError("--trace-step writes trace frames only; leave out --csv and --video");
+  if (options.traceStep && (options.csvPath || options.frames.video || options.frames.animation)) {
+    throw UsageError(
+        "--trace-step writes trace frames (and --plots) only; leave out --csv, --video and "
+        "--animation");
   }
   return options;
 }
@@ -289,6 +301,7 @@ CompareOptions parseCompareOptions(const std::vector<std::string>& arguments) {
     options.panels.push_back(parsePanel(value));
     byPanel = true;
   };
+  handlers.options["--plots"] = [&](const std::string& value) { options.plots = value; };
   parse(arguments, "compare", handlers, options.scene.scenePath);
   if (options.panels.empty()) throw UsageError("i2d compare needs --solvers or --panel");
   if (bySolver && byPanel) {

@@ -24,6 +24,7 @@ struct SceneOptions {
 struct FrameOptions {
   std::optional<std::string> directory;  ///< --frames: frames go to DIRECTORY/<scene>/
   bool video = false;                    ///< --video: an MP4 of the frames through ffmpeg
+  std::optional<std::string> animation;  ///< --animation gif|mp4: one file of the frames
   impulse2d::render::Overlays overlays;  ///< --no-overlays, --hide, --show
 };
 
@@ -35,6 +36,7 @@ struct RunOptions {
   std::optional<int> traceStep;        ///< --trace-step: one frame per solver event of step N
   /// --error-vs-reference: each step's error against the exact answer goes to this CSV.
   std::optional<std::string> errorVsReferencePath;
+  std::optional<std::string> plots;  ///< --plots: gnuplot PNGs of the run's figures go here
 };
 
 struct CheckOptions {
@@ -51,8 +53,9 @@ struct PanelOption {
 struct CompareOptions {
   SceneOptions scene;
   FrameOptions frames;
-  std::vector<PanelOption> panels;  ///< from --solvers or each --panel, left to right
-  int every = 1;                    ///< --every: a frame every K-th step
+  std::vector<PanelOption> panels;   ///< from --solvers or each --panel, left to right
+  int every = 1;                     ///< --every: a frame every K-th step
+  std::optional<std::string> plots;  ///< --plots: the panels' figures overlaid, one PNG each
 };
 
 struct AgreeOptions {

@@ -11,6 +11,7 @@
 #include "frame_output.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/trace.h"
+#include "plots.h"
 #include "scene_setup.h"
 #include "summary.h"
 
@@ -21,10 +22,15 @@ using impulse2d::Body;
 using impulse2d::SceneFile;
 using impulse2d::Simulation;
 
-/// What a run writes as it goes: the CSV and the frames, each when asked for.
+/// What a run writes as it goes: the CSV, the frames and the figures of every step (for the
+/// plots and the viewer), each when asked for.
 struct Recorders {
   std::unique_ptr<CsvWriter> csv;
   std::unique_ptr<FrameRecorder> frames;
+  std::optional<std::string> plots;
+  std::vector<StepFigures> figures;
+  std::string scene;
+  std::string solver;
   int every = 1;
 
   void record(const Simulation& simulation, long lastStep) {
@@ -32,12 +38,21 @@ struct Recorders {
     if (csv && isRecorded(step, lastStep, every)) {
       csv->writeStep(step, double(step) * simulation.settings().dt, simulation.bodies());
     }
+    if (frames || plots) figures.push_back(measureStep(simulation));
     if (frames) frames->record(simulation, lastStep);
   }
-  /// Commits the CSV and writes the sheet (and video); returns the summary lines of the frames.
+  /// Commits the CSV, writes the sheet, viewer and animation, and the plots; returns their
+  /// summary lines.
   std::vector<std::string> finish(double dt) {
     if (csv) csv->commit();
-    return frames ? frames->finish(dt) : std::vector<std::string>{};
+    std::vector<std::string> lines;
+    if (frames) lines = frames->finish(dt, figures);
+    if (plots) {
+      for (const std::string& line : writeRunPlots(*plots, scene, {{solver, figures}})) {
+        lines.push_back(line);
+      }
+    }
+    return lines;
   }
 };
 
@@ -72,13 +87,29 @@ double runSteps(Simulation& simulation, long steps, Recorders& recorders) {
 
 Recorders openRecorders(const RunOptions& options, const SceneFile& scene) {
   checkVideoPossible(options.frames);
+  if (options.plots) preparePlotDirectory(*options.plots);
   Recorders recorders;
   recorders.every = options.every;
+  recorders.plots = options.plots;
+  recorders.scene = scene.name;
+  recorders.solver = scene.solver;
   if (options.frames.directory) {
     recorders.frames = std::make_unique<FrameRecorder>(options.frames, scene, options.every);
   }
   if (options.csvPath) recorders.csv = std::make_unique<CsvWriter>(*options.csvPath);
   return recorders;
+}
+
+/// --plots with --trace-step: the step run again with a log of its solver events, plotted.
+std::string plotTracedStep(const RunOptions& options, const SceneFile& scene) {
+  preparePlotDirectory(*options.plots);
+  std::unique_ptr<Simulation> simulation = impulse2d::makeSimulation(scene);
+  while (simulation->stepCount() < *options.traceStep - 1) simulation->step();
+  EventLog events;
+  simulation->setObserver(&events);
+  simulation->step();
+  simulation->setObserver(nullptr);
+  return writeTracePlot(*options.plots, scene.name, *options.traceStep, events);
 }
 
 /// --trace-step N: runs to step N and draws each solver event of it, then its sheet.
@@ -88,6 +119,7 @@ int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& 
         "solver box2d reports no solver events, so it cannot be traced; trace "
         "micro, sequential or reference");
   }
+  if (options.plots) preparePlotDirectory(*options.plots);
   const long step = *options.traceStep;
   const impulse2d::render::RenderSettings settings = renderSettings(options.frames);
   const impulse2d::render::FrameRenderer renderer(sceneCamera(scene, settings), scene.name,
@@ -102,6 +134,9 @@ int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& 
   std::cout << "scene        " << scene.name << " (solver " << simulation.solverName() << ")\n"
             << "trace        step " << step << ": " << trace.frameCount() << " solver events\n";
   for (const std::string& line : describeFrames(trace)) std::cout << line << "\n";
+  std::cout << "viewer       "
+            << impulse2d::render::writeViewer(trace, scene.name, {}, 4.0).string() << "\n";
+  if (options.plots) std::cout << plotTracedStep(options, scene) << "\n";
   return kSuccess;
 }
 

@@ -61,8 +61,16 @@ int World::addBody(Body body) {
 
 void World::step() {
   const double h = settings_.dt / settings_.substeps;
-  for (int i = 0; i < settings_.substeps; ++i) substep(h);
+  for (int i = 0; i < settings_.substeps; ++i) {
+    applyLoads(double(stepCount_) * settings_.dt + i * h);
+    substep(h);
+  }
   ++stepCount_;
+}
+
+// Each substep's velocity update clears the forces, so loads are added again before each one.
+void World::applyLoads(double time) {
+  for (Body& body : bodies_) body.applyLoad(time);
 }
 
 void World::substep(double h) {

@@ -9,6 +9,22 @@
 
 namespace impulse2d {
 
+/// A load the scene keeps on a body (docs/scene-format.md): a constant force and torque, and a
+/// force that grows linearly with time, acting at a point fixed in the body. World applies it at
+/// the start of every substep, Box2D's adapter at the start of every step.
+struct AppliedLoad {
+  Vec2 force = Vec2::Zero();      ///< N, constant
+  Vec2 forceRate = Vec2::Zero();  ///< N/s: the force grows by this much each second from t = 0
+  Vec2 point = Vec2::Zero();      ///< m, body frame: where the force acts (0: the centre of mass)
+  double torque = 0.0;            ///< N m, constant
+
+  /// The force at simulated time t (s): force + t · forceRate.
+  Vec2 forceAt(double time) const { return force + time * forceRate; }
+  bool isZero() const {
+    return force == Vec2::Zero() && forceRate == Vec2::Zero() && torque == 0.0;
+  }
+};
+
 /// Static bodies never move and have zero inverse mass and inertia; dynamic bodies integrate.
 enum class BodyType { Static, Dynamic };
 
@@ -32,6 +48,9 @@ struct Body {
 
   Vec2 force = Vec2::Zero();  ///< N, accumulated until the next step, then cleared
   double torque = 0.0;        ///< N m, accumulated until the next step, then cleared
+
+  /// What the scene keeps pushing the body with (none by default).
+  AppliedLoad load;
 
   /// m/s^2. The linear acceleration (gravity plus force/mass) applied in the last velocity update:
   /// what the micro-collision resolver removes from a resting contact's bounce (lecture 3.6).
@@ -79,6 +98,14 @@ struct Body {
     wake();
     force += f;
     torque += cross(Vec2(p - position), f);
+  }
+
+  /// Adds the load's force at simulated time t (at its body point) and its torque for the next
+  /// update; a body without a load is left as it is (asleep if it was).
+  void applyLoad(double time) {
+    if (isStatic() || load.isZero()) return;
+    applyForce(load.forceAt(time), toWorld(load.point));
+    torque += load.torque;
   }
 
   /// Recomputes the cached rotation and bounds after position or angle changed.

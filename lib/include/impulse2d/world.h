@@ -1,6 +1,7 @@
 // The world: bodies, gravity, a fixed time step and one contact solver.
 //
-// ONE STEP runs the substep below `substeps` times with h = dt/substeps (settings.h).
+// ONE STEP runs the substep below `substeps` times with h = dt/substeps (settings.h), each after
+// applyLoads adds every body's AppliedLoad (body.h) at the substep's start time.
 // ONE SUBSTEP, IN ORDER (semi-implicit, "symplectic", Euler):
 //   1. wakeDisturbedBodies a sleeping body the user gave a velocity or force wakes.
 //   2. findContacts        broad phase (sort and sweep on bounding boxes, fattened by |v|·h with
@@ -75,6 +76,8 @@ class World : public Simulation {
   using BodyPair = std::pair<int, int>;
   using ManifoldIterator = std::vector<Manifold>::const_iterator;
 
+  /// Adds every body's applied load at simulated time `time` (s), before a substep.
+  void applyLoads(double time);
   void substep(double h);
   void wakeDisturbedBodies();
   void findContacts(double h);

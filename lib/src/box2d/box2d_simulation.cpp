@@ -93,6 +93,7 @@ Box2dSimulation::Box2dSimulation(const Scene& scene, const Box2dOptions& options
       iterations_(scene.solverSettings.box2d),
       world_(std::make_unique<Box2dWorld>(scene.world.gravity)),
       bodies_(buildBodies(scene)) {
+  settings_.substeps = 1;  // Box2D takes one step per dt, whatever the scene asks of our world
   world_->world.SetAllowSleeping(options.allowSleeping);
   world_->world.SetContinuousPhysics(options.continuousPhysics);
   const float restitutionThreshold =
@@ -114,7 +115,20 @@ Box2dSimulation::Box2dSimulation(const Scene& scene, const Box2dOptions& options
 
 Box2dSimulation::~Box2dSimulation() = default;
 
+// The same loads World applies (body.h), at the step's start time; Box2D clears them after Step.
+void Box2dSimulation::applyLoads() {
+  const double time = double(stepCount_) * settings_.dt;
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    const AppliedLoad& load = bodies_[i].load;
+    if (bodies_[i].isStatic() || load.isZero()) continue;
+    b2Body& body = *world_->bodies[i];
+    body.ApplyForce(toBox2d(load.forceAt(time)), body.GetWorldPoint(toBox2d(load.point)), true);
+    body.ApplyTorque(float(load.torque), true);
+  }
+}
+
 void Box2dSimulation::step() {
+  applyLoads();
   world_->world.Step(float(settings_.dt), iterations_.velocityIterations,
                      iterations_.positionIterations);
   readBodies();

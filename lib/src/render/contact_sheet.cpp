@@ -23,11 +23,14 @@ SheetLayout contactSheetLayout(int frameCount, int frameWidth, int frameHeight,
   SheetLayout layout;
   layout.frames = evenlySpaced(frameCount, settings.sheetThumbnails);
   const int shown = int(layout.frames.size());
-  layout.columns = std::max(1, std::min(settings.sheetColumns, shown));
+  layout.thumbnailWidth = std::max(settings.sheetThumbnailWidth,
+                                   int(std::lround(settings.sheetThumbnailScale * frameWidth)));
+  const int fitting = int(std::lround(double(settings.sheetColumns) * settings.sheetThumbnailWidth /
+                                      layout.thumbnailWidth));
+  layout.columns = std::max(1, std::min(fitting, shown));
   layout.rows = (shown + layout.columns - 1) / layout.columns;
-  layout.thumbnailWidth = settings.sheetThumbnailWidth;
-  layout.thumbnailHeight = std::max(
-      1, int(std::lround(double(settings.sheetThumbnailWidth) * frameHeight / frameWidth)));
+  layout.thumbnailHeight =
+      std::max(1, int(std::lround(double(layout.thumbnailWidth) * frameHeight / frameWidth)));
   layout.labelHeight = int(std::ceil(textHeight(settings.textScale) + 2.0 * settings.textMargin));
   layout.spacing = settings.spacing;
   layout.width = layout.columns * (layout.thumbnailWidth + layout.spacing) + layout.spacing;

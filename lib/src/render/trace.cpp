@@ -38,14 +38,18 @@ TraceRecorder::TraceRecorder(const Simulation& simulation, const FrameRenderer& 
                              FrameWriter& writer)
     : simulation_(simulation),
       renderer_(renderer.camera(), renderer.scene(), withVelocities(renderer.settings())),
-      writer_(writer) {}
+      writer_(writer) {
+  renderer_.fitForces(simulation);
+}
 
 void TraceRecorder::onSolverEvent(const SolverEvent& event, const std::vector<Body>& bodies,
                                   const std::vector<Manifold>& manifolds) {
   FrameInfo info = render::describe(simulation_, renderer_.scene());
   info.step = simulation_.stepCount() + 1;  // the step being taken, not the steps done
   info.energy = totalEnergy(bodies, simulation_.settings().gravity);
-  renderer_.draw(bodies, manifolds, {headsUpLine(info), describe(event)});
+  std::vector<std::string> lines = headsUpLines(info);
+  lines.push_back(describe(event));
+  renderer_.draw(bodies, manifolds, lines);
   drawHighlight(event, manifolds);
   writer_.write(info.step, renderer_.canvas());
 }

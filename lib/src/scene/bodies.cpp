@@ -83,10 +83,27 @@ CentredPolygon readShape(const toml::table& table) {
   return readPolygon(table);
 }
 
+/// The applied load of a dynamic body; a static body never moves, so a load on it is a mistake.
+void readLoad(const toml::table& table, BodyDef& body) {
+  readOptional(table, "force", body.load.force);
+  readOptional(table, "force_rate", body.load.forceRate);
+  readOptional(table, "force_point", body.load.point);
+  readOptional(table, "torque", body.load.torque);
+  if (body.type != BodyType::Static) return;
+  for (const char* key : {"force", "force_rate", "force_point", "torque"}) {
+    if (const auto entry = table.find(key); entry != table.end()) {
+      fail(entry->first.source(), "key '" + std::string(key) +
+                                      "' applies a load, and a static body never moves; make "
+                                      "the body dynamic or remove the key");
+    }
+  }
+}
+
 BodyDef readBody(const toml::table& table, size_t index) {
   rejectUnknownKeys(table,
                     {"name", "type", "shape", "size", "radius", "vertices", "position", "angle_deg",
-                     "velocity", "angular_velocity_deg", "density", "friction", "restitution"},
+                     "velocity", "angular_velocity_deg", "density", "friction", "restitution",
+                     "force", "force_rate", "force_point", "torque"},
                     "[[body]]");
   BodyDef body;
   body.name = "body" + std::to_string(index);
@@ -102,10 +119,12 @@ BodyDef readBody(const toml::table& table, size_t index) {
   readOptional(table, "velocity", body.velocity);
   readOptional(table, "angular_velocity_deg", angularVelocityDegrees);
   readMaterial(table, body);
+  readLoad(table, body);
   body.angle = radians(angleDegrees);
   body.angularVelocity = radians(angularVelocityDegrees);
   // The file places the body's origin; the engine places its centre of mass.
   body.position += rotation(body.angle) * shape.centroid;
+  body.load.point -= shape.centroid;
   return body;
 }
 

@@ -10,6 +10,7 @@ std::vector<Body> buildBodies(const Scene& scene) {
     Body body = makeBody(def.name, def.type, def.shape, def.density, def.position, def.angle);
     body.friction = def.friction;
     body.restitution = def.restitution;
+    body.load = def.load;
     if (!body.isStatic()) {
       body.velocity = def.velocity;
       body.angularVelocity = def.angularVelocity;

@@ -55,6 +55,7 @@ class Box2dSimulation : public Simulation {
  private:
   struct Box2dWorld;
 
+  void applyLoads();
   void readBodies();
   void readContacts();
 

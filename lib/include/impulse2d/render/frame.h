@@ -1,8 +1,11 @@
 // What a frame shows: the bodies coloured by state with a mark of their rotation, each contact
-// point with its normal, the step's normal and friction impulses as arrows, and a heads-up line.
+// point with its normal, the step's normal and friction impulses as force arrows (λ/dt), a gauge
+// of how close friction is to its limit, heads-up lines, and a legend strip saying what it all
+// means (legend.h).
 // Draws any Simulation (ours or Box2D's), or bodies and manifolds caught mid-step by a trace.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,7 @@ enum class BodyState {
   Flying,    ///< no contact points: in flight
   Resting,   ///< in contact and slower than restingSpeed and restingAngularSpeed
   Touching,  ///< in contact and moving, no point sliding: rolling, bouncing or being pushed
-  Sliding,   ///< a contact point in dynamic friction or slipping faster than slidingSpeed
+  Sliding,   ///< all points of a contact in dynamic friction, or one slipping past slidingSpeed
   Sleeping,  ///< put to sleep by the world (Body::asleep; docs/sleeping.md)
 };
 
@@ -28,7 +31,40 @@ std::vector<BodyState> classifyBodies(const std::vector<Body>& bodies,
                                       const std::vector<Manifold>& manifolds,
                                       const RenderSettings& settings);
 
+constexpr int kBodyStateCount = 6;
+
 Color colourOf(BodyState state, const Palette& palette);
+/// "static", "flying", "resting", "touching", "sliding", "asleep".
+const char* nameOf(BodyState state);
+
+/// How contact impulses become arrows: an impulse λ (N s) over a step dt is the force λ/dt (N),
+/// drawn metresPerNewton long.
+struct ForceScale {
+  double dt = 1.0 / 60.0;        ///< s
+  double metresPerNewton = 0.0;  ///< 0: not fitted yet
+};
+
+/// N. The largest contact force the bodies will rest on, estimated from their weight: the weight
+/// of the tallest column of dynamic bodies (each with those whose centre lies above its bottom
+/// over its width), shared by two contact points.
+double restingForceEstimate(const std::vector<Body>& bodies, const Vec2& gravity);
+/// The scale of a run: settings.forceScale if set, else the one that draws the resting force
+/// estimate restingForceLength of the camera's height.
+ForceScale fitForceScale(const std::vector<Body>& bodies, const Vec2& gravity, double dt,
+                         const Camera& camera, const RenderSettings& settings);
+/// How much of its friction a contact uses, |Σλt| / (μ Σλn) over its points: 0 for none, 1 on
+/// the limit (the friction cone's edge); 0 when Σλn = 0. The gauge shows it.
+double frictionUse(const Manifold& manifold);
+
+/// What a frame showed, for its legend: which body states and which arrow kinds.
+struct DrawnKinds {
+  std::array<bool, kBodyStateCount> states{};
+  bool normalForces = false;
+  bool staticFriction = false;
+  bool dynamicFriction = false;
+  bool velocities = false;
+  bool gauges = false;
+};
 
 /// What the heads-up line says.
 struct FrameInfo {
@@ -43,30 +79,40 @@ struct FrameInfo {
 FrameInfo describe(const Simulation& simulation, const std::string& scene);
 /// Total kinetic plus potential energy (J) of the dynamic bodies in gravity g.
 double totalEnergy(const std::vector<Body>& bodies, const Vec2& gravity);
-/// "scene  solver  step 120  t = 2.000 s  E = 1234.5 J"
-std::string headsUpLine(const FrameInfo& info);
-/// Height in pixels of one heads-up line with its background.
-double headsUpHeight(const RenderSettings& settings);
+/// {"scene  solver", "step 120  t = 2.000 s  E = 1234.5 J"}: two short lines, so they can be
+/// drawn large enough to read on a contact sheet's thumbnail.
+std::vector<std::string> headsUpLines(const FrameInfo& info);
+/// Font pixels per pixel of the frame's text, for a frame `frameWidth` pixels wide.
+double frameTextScale(const RenderSettings& settings, int frameWidth);
+/// Height in pixels of one heads-up line with its background, in a frame that wide.
+double headsUpHeight(const RenderSettings& settings, int frameWidth);
 
-/// The bodies and contact overlays, over whatever the canvas holds.
-void drawScene(Canvas& canvas, const Camera& camera, const std::vector<Body>& bodies,
-               const std::vector<Manifold>& manifolds, const RenderSettings& settings);
+/// The bodies and contact overlays, over whatever the canvas holds; returns what it drew.
+DrawnKinds drawScene(Canvas& canvas, const Camera& camera, const std::vector<Body>& bodies,
+                     const std::vector<Manifold>& manifolds, const ForceScale& forces,
+                     const RenderSettings& settings);
 /// An arrow from world point `at` along the world displacement `vector` (m), cut to
-/// settings.maxArrowLength and left out under settings.minArrowLength: how impulses (scaled by
-/// impulseScale) and velocities (by velocityScale) are drawn.
-void drawWorldArrow(Canvas& canvas, const Camera& camera, const Vec2& at, const Vec2& vector,
+/// settings.maxArrowLength and left out under settings.minArrowLength: how forces (scaled by
+/// ForceScale) and velocities (by velocityScale) are drawn. Returns whether it was drawn.
+bool drawWorldArrow(Canvas& canvas, const Camera& camera, const Vec2& at, const Vec2& vector,
                     Color color, const RenderSettings& settings);
 /// Lines of text along the top of the canvas, each on a pale background.
 void drawHeadsUp(Canvas& canvas, const std::vector<std::string>& lines,
                  const RenderSettings& settings);
 
-/// Draws frames of one camera into a canvas it keeps, so a run allocates its image once.
+/// Draws frames of one camera into a canvas it keeps, so a run allocates its image once. The
+/// canvas is the camera's size plus the legend strip under it when the legend is on.
 class FrameRenderer {
  public:
   FrameRenderer(const Camera& camera, std::string scene, const RenderSettings& settings = {});
 
-  /// The frame of a simulation as it stands.
+  /// The frame of a simulation as it stands. The first call fits the run's force scale to the
+  /// simulation's bodies, gravity and dt, unless fitForces was called.
   const Canvas& draw(const Simulation& simulation);
+  /// Fits the force scale every later frame uses (fitForceScale), with the substep's length as
+  /// the time an impulse acts (a world's manifolds hold its last substep's impulses).
+  void fitForces(const Simulation& simulation);
+  const ForceScale& forces() const { return forces_; }
   /// The frame of bodies and manifolds with the heads-up lines given (none: no heads-up).
   const Canvas& draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
                      const std::vector<std::string>& headsUp);
@@ -81,6 +127,7 @@ class FrameRenderer {
   Camera camera_;
   std::string scene_;
   RenderSettings settings_;
+  ForceScale forces_;
   Canvas canvas_;
 };
 

@@ -29,6 +29,8 @@ struct Palette {
   Color labelBackground{255, 255, 255, 200};  ///< behind the heads-up line and labels
   Color sheetBackground{70, 70, 70, 255};     ///< between thumbnails and panels
   Color sheetLabel{240, 240, 236, 255};       ///< the bars of step numbers and panel labels
+  Color gaugeBackground{255, 255, 255, 255};  ///< the empty part of a friction gauge
+  Color legendBackground{236, 236, 230, 255};
 };
 
 /// What a frame shows besides the bodies; each can be turned off.
@@ -40,6 +42,8 @@ struct Overlays {
   bool frictionImpulses = true;  ///< the step's friction impulse, coloured static or dynamic
   bool velocities = false;       ///< each dynamic body's velocity (always on in trace frames)
   bool headsUp = true;           ///< scene, solver, step, time and energy along the top
+  bool frictionGauges = true;    ///< at each contact, how close friction is to its limit μ λn
+  bool legend = true;  ///< a strip under the scene: the colours and arrows used, the force scale
 };
 
 struct RenderSettings {
@@ -54,12 +58,15 @@ struct RenderSettings {
   /// m/s. A contact point whose surfaces slip past each other faster than this is sliding.
   double slidingSpeed = 0.02;
 
-  /// m per N s. Length of an impulse arrow per unit of impulse: a 1 kg box resting on the ground
-  /// takes m·g·dt ≈ 0.16 N s a step, drawn 0.16 m long (a sixth of a 1 m box).
-  double impulseScale = 1.0;
+  /// m per N. Length of a force arrow: contact impulses λ are drawn as the forces λ/dt they
+  /// stand for. 0 fits the scale per run (fitForceScale in frame.h) so the largest resting
+  /// contact force is restingForceLength of the frame's height; the legend says the scale.
+  double forceScale = 0.0;
+  /// Fraction of the frame's height the largest resting contact force is drawn when the force
+  /// scale is fitted: 0.15 of a 600-pixel frame is 90 pixels, 27 on a 240-pixel thumbnail.
+  double restingForceLength = 0.15;
   /// m per N s. Length of the impulse arrow of one solver event in a trace frame. One event
-  /// applies a fraction of a step's impulse (0.02 N s is typical for a 1 kg box), so it is drawn
-  /// twenty times larger than impulseScale: 0.4 m.
+  /// applies a fraction of a step's impulse (0.02 N s is typical for a 1 kg box): 0.4 m.
   double traceImpulseScale = 20.0;
   /// m per m/s. Length of a velocity arrow: a body falling at 10 m/s gets a 1 m arrow.
   double velocityScale = 0.1;
@@ -67,6 +74,8 @@ struct RenderSettings {
   double maxArrowLength = 150.0;
   /// Arrows shorter than this are not drawn: they would be only a head.
   double minArrowLength = 2.0;
+  /// Arrow sizes at textScale; a frame whose text is drawn larger (frameTextPerPixel) draws its
+  /// arrows thicker in proportion: 1.8 times in an 800-pixel frame.
   double arrowWidth = 2.0;
   double arrowHeadLength = 7.0;
   double arrowHeadWidth = 6.0;
@@ -80,8 +89,23 @@ struct RenderSettings {
   double highlightRadius = 9.0;
   double highlightWidth = 2.5;
 
-  /// Font pixels per canvas pixel for the heads-up line and labels (stb_easy_font is ~7 px tall).
+  /// Font pixels per canvas pixel for labels on sheets and panels (stb_easy_font is ~7 px tall),
+  /// and the least a frame's heads-up line and legend use.
   double textScale = 2.0;
+  /// Font pixels per pixel of frame width for the heads-up lines and the legend, so text shrinks
+  /// with the frame and a 240-pixel thumbnail of an 800-pixel frame still shows 7-pixel letters:
+  /// 800 / 220 = 3.6 font pixels, 7 · 3.6 · 240 / 800 = 7.6 thumbnail pixels.
+  double frameTextPerPixel = 1.0 / 220.0;
+
+  /// Friction gauge: a bar of this length and thickness (pixels per font pixel of the frame's
+  /// text, so it shrinks with the frame like the text), just under the middle of each contact,
+  /// filled to |Σλt| / (μ Σλn). 8 × 3.6 ≈ 29 pixels long in an 800-pixel frame.
+  double gaugeLength = 8.0;
+  double gaugeThickness = 2.0;
+  /// A gauge at or above 1 − this is on the limit (dynamic friction) and drawn in its colour.
+  double gaugeLimitTolerance = 1e-3;
+  /// Contacts with a normal force below this (N) have no gauge: the ratio means nothing there.
+  double gaugeMinimumNormalForce = 1e-6;
   /// Space between text and the edge of its background.
   double textMargin = 4.0;
 
@@ -95,6 +119,10 @@ struct RenderSettings {
   int sheetThumbnails = 12;
   int sheetColumns = 4;
   int sheetThumbnailWidth = 240;
+  /// Thumbnails are at least this fraction of the frame's width, so the text of a wide frame (a
+  /// comparison's panels side by side) reads as well as an 800-pixel frame's at 240 pixels; the
+  /// sheet then has fewer columns, keeping its width near sheetColumns × sheetThumbnailWidth.
+  double sheetThumbnailScale = 0.3;
   /// Gap between thumbnails, and between panels of a comparison.
   int spacing = 4;
 };

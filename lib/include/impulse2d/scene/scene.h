@@ -24,6 +24,7 @@ struct BodyDef {
   double density = 1.0;           ///< kg/m^2
   double friction = 0.5;
   double restitution = 0.0;
+  AppliedLoad load;  ///< force, force_rate, force_point, torque (none by default)
 };
 
 struct Scene {

@@ -1,0 +1,41 @@
+// Per-step figures of a run and the events of a traced step.
+#include "run_figures.h"
+
+#include <cmath>
+
+namespace i2d {
+
+StepFigures measureStep(const impulse2d::Simulation& simulation) {
+  StepFigures figures;
+  figures.step = simulation.stepCount();
+  figures.time = double(figures.step) * simulation.settings().dt;
+  figures.kinetic = impulse2d::kineticEnergy(simulation);
+  figures.potential = impulse2d::potentialEnergy(simulation);
+  figures.contacts = impulse2d::contactPointCount(simulation);
+  figures.penetration = impulse2d::largestPenetration(simulation);
+  return figures;
+}
+
+impulse2d::render::FigureTable figureTable(const std::vector<StepFigures>& figures,
+                                           const std::vector<long>& frameSteps) {
+  impulse2d::render::FigureTable table;
+  table.columns = {"time (s)",         "kinetic energy (J)", "potential energy (J)",
+                   "total energy (J)", "contact points",     "largest penetration (m)"};
+  for (const long step : frameSteps) {
+    if (step < 0 || std::size_t(step) >= figures.size()) break;
+    const StepFigures& f = figures[std::size_t(step)];
+    table.rows.push_back({f.time, f.kinetic, f.potential, f.kinetic + f.potential,
+                          double(f.contacts), f.penetration});
+  }
+  return table;
+}
+
+void EventLog::onSolverEvent(const impulse2d::SolverEvent& event,
+                             const std::vector<impulse2d::Body>&,
+                             const std::vector<impulse2d::Manifold>&) {
+  if (event.phase != impulse2d::SolverEvent::Phase::Velocity) return;
+  errors_.push_back(std::abs(event.desiredChange));
+  iterations_.push_back(event.iteration);
+}
+
+}  // namespace i2d
