@@ -151,6 +151,15 @@ TEST_CASE("A fitted camera shows the dynamic bodies and the ground under them", 
   const double boxHeight = camera.toPixels(Vec2(0.0, 0.0)).y() - boxTop.y();
   CHECK(boxHeight > 0.6 * (camera.height - headsUp));
 
+  // A traced step's frame has a third heads-up line (the solver event): the fit leaves room for
+  // it, so the scene starts as far below the third line as it did below the second.
+  RenderSettings traced = settings;
+  traced.headsUpLines = 3;
+  const Camera tracedCamera = fitCamera(simulation.bodies(), ViewDef{}, traced);
+  const double lineHeight = headsUpHeight(settings, camera.width);
+  CHECK(tracedCamera.toPixels(Vec2(0.5, 1.0)).y() - 3.0 * lineHeight ==
+        Approx(boxTop.y() - 2.0 * lineHeight).margin(1.0));
+
   ViewDef view;
   view.centre = Vec2(3.0, 4.0);
   view.scale = 25.0;

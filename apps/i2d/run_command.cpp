@@ -121,7 +121,8 @@ int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& 
   }
   if (options.plots) preparePlotDirectory(*options.plots);
   const long step = *options.traceStep;
-  const impulse2d::render::RenderSettings settings = renderSettings(options.frames);
+  impulse2d::render::RenderSettings settings = renderSettings(options.frames);
+  settings.headsUpLines = 3;
   const impulse2d::render::FrameRenderer renderer(sceneCamera(scene, settings), scene.name,
                                                   settings);
   const impulse2d::render::FrameWriter trace =

@@ -48,8 +48,9 @@ Camera fitCamera(const std::vector<Body>& bodies, const ViewDef& view,
   camera.width = view.width;
   camera.height = view.height;
   const Aabb bounds = sceneBounds(bodies, settings);
-  // Room for the two heads-up lines of a run's frame.
-  const double top = settings.overlays.headsUp ? 2.0 * headsUpHeight(settings, view.width) : 0.0;
+  // Room for the heads-up lines along the top.
+  const double top =
+      settings.overlays.headsUp ? settings.headsUpLines * headsUpHeight(settings, view.width) : 0.0;
   const double padding = settings.fitPadding * std::min(view.width, view.height);
   const double usableWidth = std::max(1.0, view.width - 2.0 * padding);
   const double usableHeight = std::max(1.0, view.height - 2.0 * padding - top);

@@ -111,6 +111,9 @@ struct RenderSettings {
 
   /// Fraction of the image left empty on each side when the camera fits the scene.
   double fitPadding = 0.04;
+  /// Heads-up lines the fitted view leaves room for: a run's frame has two, a traced step's
+  /// frame three (the solver event under them).
+  int headsUpLines = 2;
   /// How far a static body may stretch the fitted view beyond the dynamic bodies, as a fraction
   /// of their extent: a 1 km ground under a 20 m pyramid shows as the pyramid's floor.
   double staticFitReach = 0.25;
