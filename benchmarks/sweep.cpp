@@ -34,14 +34,16 @@ struct Panel {
   std::string errorName;
   double runTime;  ///< s simulated
   std::function<double(const RunFigures&)> error;
-  bool referenceAffordable;  ///< the dense Lemke solve runs here (about 40 contact points)
+  /// The reference solves this scene: the active set does the pyramid; rain's impacts defeat
+  /// both the active set and Lemke (docs/global-reference.md).
+  bool referenceAffordable;
 };
 
 const std::vector<Panel> kPanels = {
     {"stack20", "contact-force error (RMS relative) 1-4 s", 4.0,
      [](const RunFigures& f) { return f.stackForceError; }, true},
     {"pyramid20", "settled drift 1-4 s (m)", 4.0, [](const RunFigures& f) { return f.drift; },
-     false},
+     true},
     {"rain", "largest penetration at rest 4-6 s (m)", 6.0,
      [](const RunFigures& f) { return f.largestPenetration; }, false},
 };

@@ -393,7 +393,7 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     pyramid,
                     probeOf<DisplacementProbe>(kSkinStep),
                     {},
-                    {{"reference", 8}},
+                    {},
                     {}});
   scenes.push_back({"heavy_on_light",
                     "Heavy box on light ones",

@@ -77,7 +77,15 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
                                       {"max_pivots", &s.lemke.maxPivots},
                                       {"pivot_tolerance", &s.lemke.pivotTolerance},
                                       {"tie_tolerance", &s.lemke.tieTolerance},
-                                      {"degeneracy_perturbation", &s.degeneracyPerturbation}};
+                                      {"degeneracy_perturbation", &s.degeneracyPerturbation},
+                                      {"lemke_island_points", &s.lemkeIslandPoints},
+                                      {"lemke_fallback_points", &s.lemkeFallbackPoints},
+                                      {"guess_sweeps", &s.activeSet.guessSweeps},
+                                      {"max_factorizations", &s.activeSet.maxFactorizations},
+                                      {"block_failures", &s.activeSet.blockFailures},
+                                      {"regularization", &s.activeSet.regularization},
+                                      {"refinements", &s.activeSet.refinements},
+                                      {"flip_tolerance", &s.activeSet.flipTolerance}};
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);
   fields.insert(fields.end(), {{"block_position_correction", &s.positionBlock.enabled},

@@ -155,6 +155,27 @@ struct LemkeSettings {
   double tieTolerance = 1e-12;
 };
 
+/// The active-set method (active_set.h) that solves the reference's large islands.
+struct ActiveSetSettings {
+  /// Projected Gauss–Seidel sweeps from last step's impulses that guess each point's state
+  /// (separated, sticking, sliding) before the first factorization.
+  int guessSweeps = 20;
+  /// The method gives up (and says so) after this many factorizations.
+  int maxFactorizations = 200;
+  /// Block flips in a row that do not lower the number of violated points before the method
+  /// flips one point at a time (Júdice–Pires' safeguard against cycling).
+  int blockFailures = 3;
+  /// Tikhonov term on each velocity row, relative to its Delassus diagonal: it makes the system
+  /// of redundant contacts (a box face's two points, a pyramid) regular. The shift of the
+  /// velocities it causes is taken out again by `refinements` solves centred on the last answer.
+  double regularization = 1e-8;
+  /// Solves per factorization that take the regularization's shift out (proximal point steps;
+  /// each removes all but about `regularization` of what is left).
+  int refinements = 3;
+  /// A condition counts as violated beyond this fraction of the island's impulse scale.
+  double flipTolerance = 1e-12;
+};
+
 /// The global solve of all contact impulses together: the accuracy reference.
 struct ReferenceSolverSettings {
   /// Required residual of the physical conditions (N s), relative to the step's impulse scale:
@@ -167,6 +188,15 @@ struct ReferenceSolverSettings {
   /// this much (relative to its largest entry, growing along the rows), the textbook remedy;
   /// the answer is checked against the unperturbed problem, so it cannot pass unnoticed.
   double degeneracyPerturbation = 1e-10;
+  /// Islands of up to this many contact points are solved by Lemke; larger ones by the active
+  /// set, whose cost grows with the sparse factorization instead of Lemke's points³ (a stack of
+  /// 10 boxes has 20 points, a 10-row pyramid 280).
+  int lemkeIslandPoints = 40;
+  /// A large island on which the active set fails is given to Lemke if it has at most this many
+  /// points; larger ones fail with the active set's reason.
+  int lemkeFallbackPoints = 300;
+  /// The active set of large islands.
+  ActiveSetSettings activeSet;
   /// Bias and bounce targets, the same rules as sequential impulses.
   ContactTargetSettings targets;
   /// The same position pass as sequential impulses.

@@ -15,7 +15,7 @@ double relativeImpulseError(const Eigen::VectorXd& impulses, const Eigen::Vector
 }
 
 double energyNormError(const Eigen::VectorXd& impulses, const Eigen::VectorXd& exact,
-                       const Eigen::MatrixXd& delassus) {
+                       const Eigen::SparseMatrix<double>& delassus) {
   const double size = exact.dot(delassus * exact);
   if (!(size > 0.0)) return std::numeric_limits<double>::quiet_NaN();
   const Eigen::VectorXd difference = impulses - exact;

@@ -1,5 +1,5 @@
-// The global reference: Delassus matrix, the frictional LCP of all points, Lemke, a residual
-// check of the answer, then the impulses.
+// The global reference: the sparse Delassus matrix, islands, each solved by Lemke (small) or the
+// active set (large), a residual check of the answer, then the impulses.
 #include "impulse2d/solvers/reference_solver.h"
 
 #include <algorithm>
@@ -51,6 +51,69 @@ double momentumAt(const Body& body, const Vec2& point) {
   return std::max(body.mass * body.velocity.norm(), angular);
 }
 
+/// The dense LCP of one island, variables (λn, λt⁺, λt⁻, β) per point, from the island's
+/// Delassus matrix, friction coefficients and free velocities (normal minus target, tangent).
+/// Rows per point i (λt = λt⁺ − λt⁻):
+///   normal:   vn − target       = W_nn λn + W_nt λt + (vn₀ − target) ≥ 0  ⟂ λn
+///   λt⁺:      vt + β            = W_tn λn + W_tt λt + β + vt₀        ≥ 0  ⟂ λt⁺
+///   λt⁻:     −vt + β                                                 ≥ 0  ⟂ λt⁻
+///   β:        μλn − λt⁺ − λt⁻                                        ≥ 0  ⟂ β
+void formulateLcp(const Eigen::MatrixXd& delassus, const Eigen::VectorXd& friction,
+                  const Eigen::VectorXd& free, Eigen::MatrixXd& matrix, Eigen::VectorXd& vector) {
+  const int count = static_cast<int>(friction.size());
+  const int size = kVariablesPerPoint * count;
+  matrix.setZero(size, size);
+  vector.setZero(size);
+  for (int i = 0; i < count; ++i) {
+    const int ri = kVariablesPerPoint * i;
+    for (int j = 0; j < count; ++j) {
+      const int cj = kVariablesPerPoint * j;
+      const Mat2 w = delassus.block<2, 2>(2 * i, 2 * j);
+      for (int r = 0; r < 2; ++r) {
+        matrix(ri + r, cj + NormalImpulse) = w(r, 0);
+        matrix(ri + r, cj + PositiveFriction) = w(r, 1);
+        matrix(ri + r, cj + NegativeFriction) = -w(r, 1);
+      }
+      matrix.block<1, 3>(ri + NegativeFriction, cj) = -matrix.block<1, 3>(ri + 1, cj);
+    }
+    matrix(ri + PositiveFriction, ri + SlidingSpeed) = 1.0;
+    matrix(ri + NegativeFriction, ri + SlidingSpeed) = 1.0;
+    matrix(ri + SlidingSpeed, ri + NormalImpulse) = friction(i);
+    matrix(ri + SlidingSpeed, ri + PositiveFriction) = -1.0;
+    matrix(ri + SlidingSpeed, ri + NegativeFriction) = -1.0;
+    vector(ri + NormalImpulse) = free(2 * i);
+    vector(ri + PositiveFriction) = free(2 * i + 1);
+    vector(ri + NegativeFriction) = -free(2 * i + 1);
+  }
+}
+
+/// Lemke on the problem as stated; on a ray (degeneracy defeating the floating-point
+/// lexicographic rule) once more on a slightly perturbed q.
+LcpSolution solveLcpWithRetry(const Eigen::MatrixXd& matrix, const Eigen::VectorXd& vector,
+                              const ReferenceSolverSettings& settings) {
+  const LcpSolution solution = solveLemke(matrix, vector, settings.lemke);
+  if (solution.solved || vector.size() == 0) return solution;
+  const int size = static_cast<int>(vector.size());
+  const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
+  const double scale = settings.degeneracyPerturbation * vector.cwiseAbs().maxCoeff();
+  LcpSolution retry = solveLemke(matrix, vector + scale * growing, settings.lemke);
+  retry.pivots += solution.pivots;
+  if (!retry.solved) retry.failure = solution.failure + "; perturbed retry: " + retry.failure;
+  return retry;
+}
+
+/// The Jacobian row of a relative velocity along `direction` at `point` on one body:
+/// (d, r×d), with the sign of the side (−1 for A, +1 for B).
+Eigen::Vector3d jacobianRow(const Body& body, const Vec2& point, const Vec2& direction,
+                            double sign) {
+  return sign *
+         Eigen::Vector3d(direction.x(), direction.y(), cross(point - body.position, direction));
+}
+
+Eigen::Vector3d velocityOf(const Body& body) {
+  return {body.velocity.x(), body.velocity.y(), body.angularVelocity};
+}
+
 }  // namespace
 
 void ReferenceSolver::solveVelocities(const StepContext& context) {
@@ -61,23 +124,20 @@ void ReferenceSolver::solveVelocities(const StepContext& context) {
 
 Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
   report_ = SolveReport{};
+  report_.iterations = 0;
   collectPoints(context);
   if (rows_.empty()) return {};
   groupIslands(context);
   buildDelassus(context);
   buildFreeVelocity(context);
-  formulateLcp();
-  const LcpSolution solution = solveLcp();
-  report_.iterations = solution.pivots;
-  if (!solution.solved) fail(solution.failure);
-  const Eigen::VectorXd impulses = contactImpulses(solution.z);
+  Eigen::VectorXd impulses = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
+  for (const std::vector<int>& island : islands_) solveIsland(context, island, impulses);
   report_.residual = residual(impulses);
   if (!(report_.residual <= settings_.residualTolerance)) {
     std::ostringstream reason;
     reason << "relative residual " << report_.residual << " exceeds the tolerance "
-           << settings_.residualTolerance << " after " << solution.pivots
-           << " pivots (LCP natural residual "
-           << naturalResidual(lcpMatrix_, lcpVector_, solution.z) << ")";
+           << settings_.residualTolerance << " after " << report_.iterations
+           << " pivots and factorizations";
     fail(reason.str());
   }
   return impulses;
@@ -94,31 +154,50 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
     for (int i = 0; i < manifold.pointCount; ++i) {
       const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
       const double normalVelocity = relativeVelocity(a, b, point.point, manifold.normal);
-      rows_.push_back(
-          PointRow{static_cast<int>(m), i, manifold.friction,
+      PointRow row{static_cast<int>(m), i, manifold.friction,
                    targetSeparatingVelocity(normalVelocity, point.penetration, manifold.restitution,
                                             context.dt, settings_.targets),
-                   std::max(momentumAt(a, point.point), momentumAt(b, point.point))});
+                   std::max(momentumAt(a, point.point), momentumAt(b, point.point))};
+      row.body = {a.isStatic() ? -1 : manifold.bodyA, b.isStatic() ? -1 : manifold.bodyB};
+      const std::array<Vec2, 2> axes{{manifold.normal, manifold.tangent()}};
+      for (size_t axis = 0; axis < 2; ++axis) {
+        row.jacobian[axis] = {jacobianRow(a, point.point, axes[axis], -1.0),
+                              jacobianRow(b, point.point, axes[axis], 1.0)};
+      }
+      row.lastImpulse = {point.normalImpulse, point.tangentImpulse};
+      rows_.push_back(row);
     }
   }
 }
 
+// W = J M⁻¹ Jᵀ with J sparse (two rows per point, three columns per body, none for static ones):
+// only points that share a dynamic body couple.
 void ReferenceSolver::buildDelassus(const StepContext& context) {
   const int count = static_cast<int>(rows_.size());
-  delassus_.setZero(2 * count, 2 * count);
+  const int columns = 3 * static_cast<int>(context.bodies.size());
+  std::vector<Eigen::Triplet<double>> triplets;
   for (int i = 0; i < count; ++i) {
-    const PointRow& rowI = rows_[static_cast<size_t>(i)];
-    const Manifold& mi = context.manifolds[static_cast<size_t>(rowI.manifold)];
-    for (int j = i; j < count; ++j) {
-      const PointRow& rowJ = rows_[static_cast<size_t>(j)];
-      const Manifold& mj = context.manifolds[static_cast<size_t>(rowJ.manifold)];
-      const Mat2 block =
-          couplingBlock(context.bodies, mi, pointOf(context, rowI.manifold, rowI.point).point, mj,
-                        pointOf(context, rowJ.manifold, rowJ.point).point);
-      delassus_.block<2, 2>(2 * i, 2 * j) = block;
-      delassus_.block<2, 2>(2 * j, 2 * i) = block.transpose();
+    const PointRow& row = rows_[static_cast<size_t>(i)];
+    for (size_t axis = 0; axis < 2; ++axis) {
+      for (size_t side = 0; side < 2; ++side) {
+        if (row.body[side] < 0) continue;
+        for (int c = 0; c < 3; ++c) {
+          triplets.emplace_back(2 * i + static_cast<int>(axis), 3 * row.body[side] + c,
+                                row.jacobian[axis][side](c));
+        }
+      }
     }
   }
+  Eigen::SparseMatrix<double> jacobian(2 * count, columns);
+  jacobian.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::VectorXd inverseMass(columns);
+  for (size_t b = 0; b < context.bodies.size(); ++b) {
+    const Body& body = context.bodies[b];
+    inverseMass.segment<3>(3 * static_cast<int>(b)) << body.inverseMass, body.inverseMass,
+        body.inverseInertia;
+  }
+  const Eigen::SparseMatrix<double> weighted = jacobian * inverseMass.asDiagonal();
+  delassus_ = weighted * jacobian.transpose();
 }
 
 void ReferenceSolver::buildFreeVelocity(const StepContext& context) {
@@ -130,40 +209,6 @@ void ReferenceSolver::buildFreeVelocity(const StepContext& context) {
     const Vec2& point = pointOf(context, rows_[i].manifold, rows_[i].point).point;
     freeVelocity_(2 * static_cast<int>(i)) = relativeVelocity(a, b, point, manifold.normal);
     freeVelocity_(2 * static_cast<int>(i) + 1) = relativeVelocity(a, b, point, manifold.tangent());
-  }
-}
-
-// Rows per point i (λt = λt⁺ − λt⁻):
-//   normal:   vn − target       = W_nn λn + W_nt λt + (vn₀ − target) ≥ 0  ⟂ λn
-//   λt⁺:      vt + β            = W_tn λn + W_tt λt + β + vt₀        ≥ 0  ⟂ λt⁺
-//   λt⁻:     −vt + β                                                 ≥ 0  ⟂ λt⁻
-//   β:        μλn − λt⁺ − λt⁻                                        ≥ 0  ⟂ β
-void ReferenceSolver::formulateLcp() {
-  const int count = static_cast<int>(rows_.size());
-  const int size = kVariablesPerPoint * count;
-  lcpMatrix_.setZero(size, size);
-  lcpVector_.setZero(size);
-  for (int i = 0; i < count; ++i) {
-    const int ri = kVariablesPerPoint * i;
-    for (int j = 0; j < count; ++j) {
-      const int cj = kVariablesPerPoint * j;
-      const Mat2 w = delassus_.block<2, 2>(2 * i, 2 * j);
-      for (int r = 0; r < 2; ++r) {
-        lcpMatrix_(ri + r, cj + NormalImpulse) = w(r, 0);
-        lcpMatrix_(ri + r, cj + PositiveFriction) = w(r, 1);
-        lcpMatrix_(ri + r, cj + NegativeFriction) = -w(r, 1);
-      }
-      lcpMatrix_.block<1, 3>(ri + NegativeFriction, cj) = -lcpMatrix_.block<1, 3>(ri + 1, cj);
-    }
-    lcpMatrix_(ri + PositiveFriction, ri + SlidingSpeed) = 1.0;
-    lcpMatrix_(ri + NegativeFriction, ri + SlidingSpeed) = 1.0;
-    lcpMatrix_(ri + SlidingSpeed, ri + NormalImpulse) = rows_[static_cast<size_t>(i)].friction;
-    lcpMatrix_(ri + SlidingSpeed, ri + PositiveFriction) = -1.0;
-    lcpMatrix_(ri + SlidingSpeed, ri + NegativeFriction) = -1.0;
-    lcpVector_(ri + NormalImpulse) =
-        freeVelocity_(2 * i) - rows_[static_cast<size_t>(i)].targetNormalVelocity;
-    lcpVector_(ri + PositiveFriction) = freeVelocity_(2 * i + 1);
-    lcpVector_(ri + NegativeFriction) = -freeVelocity_(2 * i + 1);
   }
 }
 
@@ -181,75 +226,132 @@ void ReferenceSolver::groupIslands(const StepContext& context) {
     return body;
   };
   for (const PointRow& row : rows_) {
-    const Manifold& manifold = context.manifolds[static_cast<size_t>(row.manifold)];
-    if (context.bodies[static_cast<size_t>(manifold.bodyA)].isStatic() ||
-        context.bodies[static_cast<size_t>(manifold.bodyB)].isStatic()) {
-      continue;
+    if (row.body[0] >= 0 && row.body[1] >= 0) {
+      parent[static_cast<size_t>(root(row.body[0]))] = root(row.body[1]);
     }
-    parent[static_cast<size_t>(root(manifold.bodyA))] = root(manifold.bodyB);
   }
   std::vector<int> islandOfRoot(parent.size(), -1);
   islands_.clear();
   for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
-    const Manifold& manifold =
-        context.manifolds[static_cast<size_t>(rows_[static_cast<size_t>(i)].manifold)];
-    const bool aStatic = context.bodies[static_cast<size_t>(manifold.bodyA)].isStatic();
-    const int body = root(aStatic ? manifold.bodyB : manifold.bodyA);
+    const PointRow& row = rows_[static_cast<size_t>(i)];
+    const int body = root(row.body[0] >= 0 ? row.body[0] : row.body[1]);
     int& island = islandOfRoot[static_cast<size_t>(body)];
     if (island < 0) {
       island = static_cast<int>(islands_.size());
       islands_.emplace_back();
     }
-    for (int v = 0; v < kVariablesPerPoint; ++v) {
-      islands_[static_cast<size_t>(island)].push_back(kVariablesPerPoint * i + v);
+    islands_[static_cast<size_t>(island)].push_back(i);
+  }
+}
+
+// Small islands by Lemke; large ones by the active set, with Lemke as the fallback while the
+// island is not too large for it. A failure ends the solve with its reason.
+void ReferenceSolver::solveIsland(const StepContext& context, const std::vector<int>& island,
+                                  Eigen::VectorXd& impulses) {
+  const int points = static_cast<int>(island.size());
+  std::string failure;
+  if (points > settings_.lemkeIslandPoints) {
+    const ActiveSetAnswer answer = solveByActiveSet(context, island);
+    report_.iterations += answer.factorizations;
+    if (answer.solved) {
+      for (int k = 0; k < points; ++k) {
+        impulses.segment<2>(2 * island[static_cast<size_t>(k)]) = answer.impulses.segment<2>(2 * k);
+      }
+      return;
+    }
+    if (points > settings_.lemkeFallbackPoints) fail(answer.failure);
+    failure = answer.failure + "; ";
+  }
+  const LcpSolution solution = solveByLemke(island);
+  report_.iterations += solution.pivots;
+  if (!solution.solved) fail(failure + solution.failure);
+  for (int k = 0; k < points; ++k) {
+    const int ri = kVariablesPerPoint * k;
+    impulses.segment<2>(2 * island[static_cast<size_t>(k)]) << solution.z(ri + NormalImpulse),
+        solution.z(ri + PositiveFriction) - solution.z(ri + NegativeFriction);
+  }
+}
+
+/// The island's rows and columns of the Delassus matrix (islands do not couple).
+Eigen::SparseMatrix<double> ReferenceSolver::islandDelassus(const std::vector<int>& island) const {
+  std::vector<int> local(static_cast<size_t>(delassus_.rows()), -1);
+  for (size_t k = 0; k < island.size(); ++k) {
+    local[static_cast<size_t>(2 * island[k])] = static_cast<int>(2 * k);
+    local[static_cast<size_t>(2 * island[k] + 1)] = static_cast<int>(2 * k + 1);
+  }
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const int point : island) {
+    for (int column = 2 * point; column < 2 * point + 2; ++column) {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(delassus_, column); it; ++it) {
+        const int row = local[static_cast<size_t>(it.row())];
+        if (row >= 0) triplets.emplace_back(row, local[static_cast<size_t>(column)], it.value());
+      }
     }
   }
+  const int size = 2 * static_cast<int>(island.size());
+  Eigen::SparseMatrix<double> block(size, size);
+  block.setFromTriplets(triplets.begin(), triplets.end());
+  return block;
 }
 
-// One LCP per island (the islands do not couple: the matrix is block diagonal in them).
-LcpSolution ReferenceSolver::solveLcp() const {
-  LcpSolution all;
-  all.z = Eigen::VectorXd::Zero(lcpVector_.size());
-  for (const std::vector<int>& island : islands_) {
-    const LcpSolution part = solveIsland(lcpMatrix_(island, island), lcpVector_(island));
-    all.pivots += part.pivots;
-    if (!part.solved) {
-      all.failure = part.failure;
-      return all;
+LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const {
+  const int count = static_cast<int>(island.size());
+  Eigen::VectorXd friction(count);
+  Eigen::VectorXd free(2 * count);
+  for (int k = 0; k < count; ++k) {
+    const int i = island[static_cast<size_t>(k)];
+    friction(k) = rows_[static_cast<size_t>(i)].friction;
+    free(2 * k) = freeVelocity_(2 * i) - rows_[static_cast<size_t>(i)].targetNormalVelocity;
+    free(2 * k + 1) = freeVelocity_(2 * i + 1);
+  }
+  Eigen::MatrixXd matrix;
+  Eigen::VectorXd vector;
+  formulateLcp(Eigen::MatrixXd(islandDelassus(island)), friction, free, matrix, vector);
+  return solveLcpWithRetry(matrix, vector, settings_);
+}
+
+ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
+                                                  const std::vector<int>& island) const {
+  IslandProblem problem;
+  std::vector<int> localBody(context.bodies.size(), -1);
+  std::vector<int> bodies;
+  problem.guess.resize(2 * static_cast<int>(island.size()));
+  for (size_t k = 0; k < island.size(); ++k) {
+    const PointRow& row = rows_[static_cast<size_t>(island[k])];
+    IslandPoint point;
+    point.targetNormalVelocity = row.targetNormalVelocity;
+    point.friction = row.friction;
+    point.jacobian = row.jacobian;
+    const Manifold& manifold = context.manifolds[static_cast<size_t>(row.manifold)];
+    const std::array<int, 2> pair{{manifold.bodyA, manifold.bodyB}};
+    for (size_t side = 0; side < 2; ++side) {
+      const Body& body = context.bodies[static_cast<size_t>(pair[side])];
+      if (row.body[side] < 0) {
+        for (size_t axis = 0; axis < 2; ++axis) {
+          point.staticVelocity[axis] += row.jacobian[axis][side].dot(velocityOf(body));
+        }
+        continue;
+      }
+      int& local = localBody[static_cast<size_t>(pair[side])];
+      if (local < 0) {
+        local = static_cast<int>(bodies.size());
+        bodies.push_back(pair[side]);
+      }
+      point.body[side] = local;
     }
-    all.z(island) = part.z;
+    problem.points.push_back(point);
+    problem.guess.segment<2>(2 * static_cast<int>(k)) = row.lastImpulse;
   }
-  all.w = lcpMatrix_ * all.z + lcpVector_;
-  all.solved = true;
-  return all;
-}
-
-// Lemke on the problem as stated; on a ray (degeneracy defeating the floating-point
-// lexicographic rule) once more on a slightly perturbed q.
-LcpSolution ReferenceSolver::solveIsland(const Eigen::MatrixXd& matrix,
-                                         const Eigen::VectorXd& vector) const {
-  const LemkeSettings& options = settings_.lemke;
-  const LcpSolution solution = solveLemke(matrix, vector, options);
-  if (solution.solved || vector.size() == 0) return solution;
-  const int size = static_cast<int>(vector.size());
-  const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
-  const double scale = settings_.degeneracyPerturbation * vector.cwiseAbs().maxCoeff();
-  LcpSolution retry = solveLemke(matrix, vector + scale * growing, options);
-  retry.pivots += solution.pivots;
-  if (!retry.solved) retry.failure = solution.failure + "; perturbed retry: " + retry.failure;
-  return retry;
-}
-
-/// (λn, λt) of every point, interleaved like the Delassus rows.
-Eigen::VectorXd ReferenceSolver::contactImpulses(const Eigen::VectorXd& lcpSolution) const {
-  const int count = static_cast<int>(rows_.size());
-  Eigen::VectorXd impulses(2 * count);
-  for (int i = 0; i < count; ++i) {
-    const int ri = kVariablesPerPoint * i;
-    impulses(2 * i) = lcpSolution(ri + NormalImpulse);
-    impulses(2 * i + 1) = lcpSolution(ri + PositiveFriction) - lcpSolution(ri + NegativeFriction);
+  problem.inverseMass.resize(3 * static_cast<int>(bodies.size()));
+  problem.velocity.resize(3 * static_cast<int>(bodies.size()));
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    const Body& body = context.bodies[static_cast<size_t>(bodies[k])];
+    problem.inverseMass.segment<3>(3 * static_cast<int>(k)) << body.inverseMass, body.inverseMass,
+        body.inverseInertia;
+    problem.velocity.segment<3>(3 * static_cast<int>(k)) = velocityOf(body);
   }
-  return impulses;
+  problem.delassus = islandDelassus(island);
+  return solveActiveSet(problem, settings_.activeSet);
 }
 
 // The answer is checked against the physical conditions themselves, not the LCP's bookkeeping,
@@ -257,14 +359,14 @@ Eigen::VectorXd ReferenceSolver::contactImpulses(const Eigen::VectorXd& lcpSolut
 double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
   if (impulses.size() == 0) return 0.0;
   const Eigen::VectorXd velocity = freeVelocity_ + delassus_ * impulses;
+  const Eigen::VectorXd diagonal = delassus_.diagonal();
   double worst = 0.0;
   for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
     const PointRow& row = rows_[static_cast<size_t>(i)];
-    worst = std::max(worst,
-                     pointViolation(impulses(2 * i), impulses(2 * i + 1),
-                                    velocity(2 * i) - row.targetNormalVelocity, velocity(2 * i + 1),
-                                    row.friction, 1.0 / delassus_(2 * i, 2 * i),
-                                    1.0 / delassus_(2 * i + 1, 2 * i + 1)));
+    worst = std::max(
+        worst, pointViolation(impulses(2 * i), impulses(2 * i + 1),
+                              velocity(2 * i) - row.targetNormalVelocity, velocity(2 * i + 1),
+                              row.friction, 1.0 / diagonal(2 * i), 1.0 / diagonal(2 * i + 1)));
   }
   const double scale = impulseScale(impulses);
   return scale > 0.0 ? worst / scale : worst;
@@ -278,10 +380,12 @@ double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
 // arm).
 double ReferenceSolver::impulseScale(const Eigen::VectorXd& impulses) const {
   double scale = impulses.cwiseAbs().maxCoeff();
+  const Eigen::VectorXd diagonal = delassus_.diagonal();
   for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
-    scale = std::max({scale, std::abs(lcpVector_(kVariablesPerPoint * i)) / delassus_(2 * i, 2 * i),
-                      std::abs(freeVelocity_(2 * i + 1)) / delassus_(2 * i + 1, 2 * i + 1),
-                      rows_[static_cast<size_t>(i)].momentum});
+    const PointRow& row = rows_[static_cast<size_t>(i)];
+    scale = std::max({scale,
+                      std::abs(freeVelocity_(2 * i) - row.targetNormalVelocity) / diagonal(2 * i),
+                      std::abs(freeVelocity_(2 * i + 1)) / diagonal(2 * i + 1), row.momentum});
   }
   return scale;
 }

@@ -36,7 +36,7 @@ double relativeImpulseError(const Eigen::VectorXd& impulses, const Eigen::Vector
 
 /// sqrt(dᵀW d / λ*ᵀW λ*), d = λ − λ*; NaN when λ*ᵀW λ* = 0.
 double energyNormError(const Eigen::VectorXd& impulses, const Eigen::VectorXd& exact,
-                       const Eigen::MatrixXd& delassus);
+                       const Eigen::SparseMatrix<double>& delassus);
 
 /// The impulses (λn, λt) the solver left on the points, in the reference's order.
 Eigen::VectorXd appliedImpulses(const std::vector<Manifold>& manifolds);

@@ -8,13 +8,23 @@
 //   |λt| ≤ μλn, and if the point slides, λt = −μλn·sign(vt)  Coulomb (in 2D the cone is exact)
 // With λt = λt⁺ − λt⁻ and β (the sliding speed) the Coulomb conditions become complementarity
 // rows too (Stewart–Trinkle): vt + β ⟂ λt⁺, −vt + β ⟂ λt⁻, μλn − λt⁺ − λt⁻ ⟂ β.
+//
+// HOW IT SCALES: points couple only through the dynamic bodies they share, so W = J M⁻¹ Jᵀ is
+// sparse and the problem splits into islands (static bodies join nothing). An island of up to
+// lemkeIslandPoints points is solved by Lemke on its dense LCP (points³, exact, cheap when
+// small); a larger one by the active set (active_set.h: sparse factorizations of the KKT system,
+// started from last step's states), with Lemke as the fallback while the island is not too big.
+// Either answer is checked against the physical conditions before it is used.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 
 #include "impulse2d/solver.h"
+#include "impulse2d/solvers/active_set.h"
 #include "impulse2d/solvers/lcp.h"
 
 namespace impulse2d {
@@ -30,9 +40,9 @@ class ReferenceSolver : public ContactSolver {
   void solveVelocities(const StepContext& context) override;
   /// The same position pass as sequential impulses (position_correction.h).
   void solvePositions(const StepContext& context) override;
-  /// iterations: Lemke pivots; residual: the worst violated condition in N s, relative to the
-  /// step's impulse scale (the largest of the impulses, each point's cancelling impulses and the
-  /// momenta of the bodies in contact).
+  /// iterations: Lemke pivots plus active-set factorizations; residual: the worst violated
+  /// condition in N s, relative to the step's impulse scale (the largest of the impulses, each
+  /// point's cancelling impulses and the momenta of the bodies in contact).
   SolveReport lastReport() const override { return report_; }
 
   /// The step's exact impulses (λn, λt) per point, interleaved in the order of the manifolds and
@@ -44,8 +54,9 @@ class ReferenceSolver : public ContactSolver {
 
   /// The Delassus matrix of the last solve: rows/columns 2i (normal) and 2i+1 (tangent) of point
   /// i, in the order of the manifolds and their points; entry (r, c) is the relative velocity
-  /// change along r from a unit impulse along c.
-  const Eigen::MatrixXd& delassusMatrix() const { return delassus_; }
+  /// change along r from a unit impulse along c. Sparse: zero between points that share no
+  /// dynamic body.
+  const Eigen::SparseMatrix<double>& delassusMatrix() const { return delassus_; }
 
   const ReferenceSolverSettings& settings() const { return settings_; }
 
@@ -57,27 +68,31 @@ class ReferenceSolver : public ContactSolver {
     double friction = 0.0;
     double targetNormalVelocity = 0.0;
     double momentum = 0.0;  ///< N s, the larger of its two bodies' momenta seen from the point
+    std::array<int, 2> body{{-1, -1}};  ///< A and B, −1 for a static body
+    /// The Jacobian rows (normal, tangent) on A and B: −(d, r×d) and +(d, r×d).
+    std::array<std::array<Eigen::Vector3d, 2>, 2> jacobian{};
+    Eigen::Vector2d lastImpulse = Eigen::Vector2d::Zero();  ///< kept by feature id
   };
 
   void collectPoints(const StepContext& context);
   void buildDelassus(const StepContext& context);
   void buildFreeVelocity(const StepContext& context);
-  void formulateLcp();
   void groupIslands(const StepContext& context);
-  LcpSolution solveLcp() const;
-  LcpSolution solveIsland(const Eigen::MatrixXd& matrix, const Eigen::VectorXd& vector) const;
-  Eigen::VectorXd contactImpulses(const Eigen::VectorXd& lcpSolution) const;
+  void solveIsland(const StepContext& context, const std::vector<int>& island,
+                   Eigen::VectorXd& impulses);
+  LcpSolution solveByLemke(const std::vector<int>& island) const;
+  ActiveSetAnswer solveByActiveSet(const StepContext& context,
+                                   const std::vector<int>& island) const;
+  Eigen::SparseMatrix<double> islandDelassus(const std::vector<int>& island) const;
   double impulseScale(const Eigen::VectorXd& impulses) const;
   void applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) const;
   void fail(const std::string& reason);
 
   ReferenceSolverSettings settings_;
   std::vector<PointRow> rows_;
-  Eigen::MatrixXd delassus_;      ///< 2p × 2p
-  Eigen::VectorXd freeVelocity_;  ///< 2p: (vn, vt) of each point before the solve
-  Eigen::MatrixXd lcpMatrix_;     ///< 4p × 4p, variables (λn, λt⁺, λt⁻, β) per point
-  Eigen::VectorXd lcpVector_;     ///< 4p
-  /// The LCP variables of each island: points joined through dynamic bodies.
+  Eigen::SparseMatrix<double> delassus_;  ///< 2p × 2p
+  Eigen::VectorXd freeVelocity_;          ///< 2p: (vn, vt) of each point before the solve
+  /// The points of each island: points joined through dynamic bodies.
   std::vector<std::vector<int>> islands_;
   SolveReport report_;
 };

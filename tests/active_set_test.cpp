@@ -1,0 +1,134 @@
+// The reference's active set (active_set.h), which solves the islands too large for Lemke: the
+// same exact forces where the answer is unique, Coulomb's law, a pyramid at rest, and a failure
+// that is reported, or handed to Lemke.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "impulse2d/solvers/reference_solver.h"
+#include "impulse2d/world.h"
+#include "solver_scenes.h"
+
+using namespace impulse2d;
+using namespace solvers;
+
+namespace {
+
+/// Every island, however small, goes to the active set.
+Scene activeSetOnly(Scene scene) {
+  scene.solverSettings.reference.lemkeIslandPoints = 0;
+  return scene;
+}
+
+/// N. The total normal force the ground (body 0) carries in the last step.
+double groundForce(const World& world) {
+  double impulse = 0.0;
+  for (const Manifold& manifold : world.manifolds()) {
+    if (manifold.bodyA != 0 && manifold.bodyB != 0) continue;
+    for (int i = 0; i < manifold.pointCount; ++i) impulse += manifold.points[i].normalImpulse;
+  }
+  return impulse / world.settings().dt;
+}
+
+/// m/s. The largest speed of a dynamic body.
+double fastestBody(const World& world) {
+  double fastest = 0.0;
+  for (const Body& body : world.bodies()) fastest = std::max(fastest, body.velocity.norm());
+  return fastest;
+}
+
+constexpr double kResidual = 1e-9;
+
+}  // namespace
+
+TEST_CASE("the active set gives a 10-box stack the weights above it, as Lemke does",
+          "[reference][active_set][stack]") {
+  constexpr int kBoxes = 10;
+  auto world = buildWorld(activeSetOnly(stackScene("reference", kBoxes, 0.6)));
+  int factorizations = 0;
+  const int steps = stepsIn(2.0);
+  for (int step = 0; step < steps; ++step) {
+    world->step();
+    const SolveReport report = world->solver().lastReport();
+    REQUIRE(report.residual <= kResidual);
+    factorizations += report.iterations;
+    for (int level = 0; level < kBoxes; ++level) {
+      INFO("level " << level << ", step " << step);
+      CHECK(contactForce(*world, level, level + 1) ==
+            Approx((kBoxes - level) * kBoxMass * kGravity).epsilon(1e-6));
+    }
+  }
+  // Last step's states are right for a resting stack: one factorization a step, a few at first.
+  CHECK(factorizations <= steps + 5);
+}
+
+TEST_CASE("the active set holds a box below Coulomb's angle and slides it above, exactly",
+          "[reference][active_set][friction]") {
+  const double angle = 20.0 * std::acos(-1.0) / 180.0;
+  for (const double friction : {0.2, 0.3, 0.5, 0.8}) {
+    Scene scene = activeSetOnly(lecture::sceneWith("reference", kDt));
+    scene.bodies.push_back(lecture::ground(friction, angle));
+    scene.bodies.push_back(lecture::boxOnSlope(Vec2(1.0, 1.0), angle, friction));
+    auto world = buildWorld(scene);
+    const double g = -scene.world.gravity.y();
+    std::vector<double> speeds;
+    for (int step = 0; step < stepsIn(1.0); ++step) {
+      world->step();
+      REQUIRE(world->solver().lastReport().residual <= kResidual);
+      speeds.push_back(world->bodies()[1].velocity.norm());
+    }
+    INFO("mu " << friction);
+    const bool holds = friction > std::tan(angle);
+    if (holds) {
+      CHECK(speeds.back() < 1e-9);
+    } else {
+      const double acceleration = (speeds.back() - speeds[speeds.size() - 31]) / (30 * kDt);
+      const double expected = g * (std::sin(angle) - friction * std::cos(angle));
+      CHECK(acceleration == Approx(expected).epsilon(1e-6));
+    }
+  }
+}
+
+TEST_CASE("an 8-row pyramid at rest is solved exactly every step; the ground carries it",
+          "[reference][active_set][pyramid]") {
+  constexpr int kRows = 8;
+  const double weight = kRows * (kRows + 1) / 2 * kBoxMass * kGravity;
+  auto world = buildWorld(activeSetOnly(pyramidScene("reference", kRows, 0.6)));
+  for (int step = 0; step < stepsIn(1.0); ++step) {
+    INFO("step " << step);
+    REQUIRE_NOTHROW(world->step());
+    REQUIRE(world->solver().lastReport().residual <= kResidual);
+    CHECK(groundForce(*world) == Approx(weight).epsilon(1e-6));
+  }
+  CHECK(fastestBody(*world) < 1e-6);
+}
+
+TEST_CASE("an active set that fails says why, or hands the island to Lemke",
+          "[reference][active_set][failure]") {
+  Scene scene = activeSetOnly(stackScene("reference", 3, 0.6));
+  for (BodyDef& body : scene.bodies) {
+    if (body.type == BodyType::Dynamic) body.position.y() += 0.02;  // lands: states must change
+  }
+  ReferenceSolverSettings& settings = scene.solverSettings.reference;
+  settings.activeSet.maxFactorizations = 1;
+  settings.activeSet.guessSweeps = 0;
+  settings.lemkeFallbackPoints = 0;
+  auto alone = buildWorld(scene);
+  bool failed = false;
+  for (int step = 0; step < stepsIn(1.0) && !failed; ++step) {
+    try {
+      alone->step();
+    } catch (const std::runtime_error& error) {
+      failed = true;
+      CHECK_THAT(error.what(), Catch::Contains("active set: factorization limit of 1 reached"));
+    }
+  }
+  CHECK(failed);
+
+  settings.lemkeFallbackPoints = 300;
+  auto withLemke = buildWorld(scene);
+  for (int step = 0; step < stepsIn(1.0); ++step) {
+    REQUIRE_NOTHROW(withLemke->step());
+    REQUIRE(withLemke->solver().lastReport().residual <= kResidual);
+  }
+}
