@@ -79,6 +79,42 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("each Delassus column is what a unit impulse at its point does to every point",
+          "[reference][delassus][probe]") {
+  auto world = buildWorld(pyramidScene("reference", 3, 0.6));
+  world->step();
+  const Eigen::MatrixXd w(referenceOf(*world).delassusMatrix());
+  // Every point's (vn, vt), in the matrix's order.
+  const auto velocities = [&](const std::vector<Body>& bodies) {
+    std::vector<double> v;
+    for (const Manifold& m : world->manifolds()) {
+      const Body& a = bodies[static_cast<size_t>(m.bodyA)];
+      const Body& b = bodies[static_cast<size_t>(m.bodyB)];
+      for (int i = 0; i < m.pointCount; ++i) {
+        v.push_back(relativeVelocity(a, b, m.points[i].point, m.normal));
+        v.push_back(relativeVelocity(a, b, m.points[i].point, m.tangent()));
+      }
+    }
+    return v;
+  };
+  const std::vector<double> before = velocities(world->bodies());
+  int column = 0;
+  for (const Manifold& manifold : world->manifolds()) {
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      for (int axis = 0; axis < 2; ++axis, ++column) {
+        std::vector<Body> probed = world->bodies();
+        applyContactImpulse(probed, manifold, i, axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0);
+        const std::vector<double> after = velocities(probed);
+        for (int row = 0; row < w.rows(); ++row) {
+          INFO("row " << row << ", column " << column);
+          CHECK(after[static_cast<size_t>(row)] - before[static_cast<size_t>(row)] ==
+                Approx(w(row, column)).margin(1e-12));
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("on a slope the reference gives N = m g cos θ, and friction m g sin θ or μN",
           "[reference][friction]") {
   constexpr double kFriction = 0.4;

@@ -18,29 +18,6 @@ Mat2 contactMatrix(const Body& a, const Body& b, const Vec2& point, const Vec2& 
   return matrix;
 }
 
-Mat2 couplingBlock(const std::vector<Body>& bodies, const Manifold& mi, const Vec2& pi,
-                   const Manifold& mj, const Vec2& pj) {
-  const std::array<Vec2, 2> directionsI{mi.normal, mi.tangent()};
-  const std::array<Vec2, 2> directionsJ{mj.normal, mj.tangent()};
-  const std::array<std::pair<int, double>, 2> bodiesI{{{mi.bodyA, -1.0}, {mi.bodyB, 1.0}}};
-  const std::array<std::pair<int, double>, 2> bodiesJ{{{mj.bodyA, -1.0}, {mj.bodyB, 1.0}}};
-  Mat2 block = Mat2::Zero();
-  for (const auto& [bodyI, signI] : bodiesI) {
-    for (const auto& [bodyJ, signJ] : bodiesJ) {
-      const Body& body = bodies[static_cast<size_t>(bodyI)];
-      if (bodyI != bodyJ || body.isStatic()) continue;
-      for (int r = 0; r < 2; ++r) {
-        for (int c = 0; c < 2; ++c) {
-          block(r, c) += signI * signJ *
-                         velocityPerUnitImpulse(body, pj, directionsJ[static_cast<size_t>(c)], pi,
-                                                directionsI[static_cast<size_t>(r)]);
-        }
-      }
-    }
-  }
-  return block;
-}
-
 Vec2 contactVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2& normal) {
   const Vec2 relative = b.velocityAt(point) - a.velocityAt(point);
   return Vec2(relative.dot(normal), relative.dot(leftPerpendicular(normal)));

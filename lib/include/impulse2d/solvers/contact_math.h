@@ -64,13 +64,6 @@ inline Mat2 normalCouplingMatrix(const Body& a, const Body& b, const Vec2& norma
   return k;
 }
 
-/// The 2×2 block of the Delassus matrix between point i of manifold mi and point j of manifold
-/// mj: how j's impulses (columns: normal, tangent) change i's relative velocities (rows: normal,
-/// tangent), summed over the dynamic bodies the two manifolds share, each with the sign
-/// convention's −1 for A and +1 for B. Zero when they share no dynamic body.
-Mat2 couplingBlock(const std::vector<Body>& bodies, const Manifold& mi, const Vec2& pi,
-                   const Manifold& mj, const Vec2& pj);
-
 // ---- velocities and impulses at a contact ----
 
 /// The relative velocity (B's material minus A's) at `point`, along `direction`: vn on the
