@@ -1,6 +1,6 @@
 // The reference's active set (active_set.h), which solves the islands too large for Lemke: the
-// same exact forces where the answer is unique, Coulomb's law, a pyramid at rest, and a failure
-// that is reported, or handed to Lemke.
+// same exact forces where the answer is unique, Coulomb's law, a pyramid at rest and landing, and
+// a failure that is reported, or handed to Lemke.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -101,6 +101,24 @@ TEST_CASE("an 8-row pyramid at rest is solved exactly every step; the ground car
     CHECK(groundForce(*world) == Approx(weight).epsilon(1e-6));
   }
   CHECK(fastestBody(*world) < 1e-6);
+}
+
+TEST_CASE("an 8-row pyramid dropped 5 cm lands and settles, solved exactly every step",
+          "[reference][active_set][pyramid][landing]") {
+  constexpr int kRows = 8;
+  const double weight = kRows * (kRows + 1) / 2 * kBoxMass * kGravity;
+  Scene scene = activeSetOnly(pyramidScene("reference", kRows, 0.6));
+  for (BodyDef& body : scene.bodies) {
+    if (body.type == BodyType::Dynamic) body.position.y() += 0.05;
+  }
+  auto world = buildWorld(scene);
+  for (int step = 0; step < stepsIn(1.5); ++step) {
+    INFO("step " << step);
+    REQUIRE_NOTHROW(world->step());
+    REQUIRE(world->solver().lastReport().residual <= kResidual);
+  }
+  CHECK(fastestBody(*world) < 1e-6);
+  CHECK(groundForce(*world) == Approx(weight).epsilon(1e-6));
 }
 
 TEST_CASE("an active set that fails says why, or hands the island to Lemke",

@@ -92,7 +92,7 @@ void addBodyRows(const IslandProblem& problem, Triplets& triplets) {
   }
 }
 
-/// The row of a point's velocity along an axis: J u − r λ (r, the regularization, is kept in
+/// The row of a point's velocity along an axis: J u + r λ (r, the regularization, is kept in
 /// `shift` so solveProximal can take it out again).
 void addVelocityRow(const IslandProblem& problem, int i, int axis, double regularization,
                     Triplets& triplets, Eigen::VectorXd& shift) {
@@ -106,7 +106,7 @@ void addVelocityRow(const IslandProblem& problem, int i, int axis, double regula
         point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)];
     for (int c = 0; c < 3; ++c) triplets.emplace_back(row, 3 * body + c, coefficients(c));
   }
-  triplets.emplace_back(row, row, -regularization);
+  triplets.emplace_back(row, row, regularization);
   shift(2 * i + axis) = regularization;
 }
 
@@ -180,7 +180,8 @@ double impulseScale(const Eigen::VectorXd& impulses, const Eigen::VectorXd& free
 }
 
 /// Solves the factorized system, then takes the regularization out again: each further solve
-/// centres it on the last impulses (J u − r(λ − λ_last) = target), reusing the factorization, so
+/// centres it on the last impulses (J u + r(λ − λ_last) = target: a proximal point step, the
+/// velocity change W + r stays positive definite), reusing the factorization, so
 /// the velocity rows end exact while redundant contacts keep the split the first solve chose.
 Eigen::VectorXd solveProximal(const Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>>& lu,
                               const Eigen::VectorXd& rhs, const Eigen::VectorXd& shift,
@@ -189,7 +190,7 @@ Eigen::VectorXd solveProximal(const Eigen::SparseLU<Sparse, Eigen::COLAMDOrderin
   Eigen::VectorXd x = lu.solve(rhs);
   for (int k = 0; k < refinements; ++k) {
     Eigen::VectorXd centred = rhs;
-    centred.tail(shift.size()) -= shift.cwiseProduct(x.tail(shift.size()));
+    centred.tail(shift.size()) += shift.cwiseProduct(x.tail(shift.size()));
     x = lu.solve(centred);
   }
   return x.tail(x.size() - bodyUnknowns);
