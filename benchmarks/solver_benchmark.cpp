@@ -63,6 +63,7 @@ const std::vector<MethodRun> kPyramidMethods = {
     {"sequential 20 iterations (default) + position pass", "sequential", 0, 0.0},
     {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
     {"micro 200 per contact (default)", "micro", 0, kShortRunTime},
+    {"reference (active set)", "reference", 0, kShortRunTime},
 };
 
 const std::vector<MethodRun> kStackMethods = {
@@ -279,7 +280,8 @@ int main(int argc, char** argv) {
   measureAndPrint("stack10", kStackMethods, length, true);
   measureAndPrint("stack20", kStackMethods, length, true);
   measureAndPrint("pyramid40",
-                  {kPyramidMethods[0], kPyramidMethods[1], kPyramidMethods[3], kPyramidMethods[4]},
+                  {kPyramidMethods[0], kPyramidMethods[1], kPyramidMethods[3], kPyramidMethods[4],
+                   kPyramidMethods[6]},
                   length, false);
   measureAndPrint(
       "rain",
