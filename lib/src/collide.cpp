@@ -133,15 +133,16 @@ int collidePolygonAndCircle(const Body& polygon, const Body& circle, bool polygo
 /// SAT: the face of `reference` that separates `other` most. Its separation is the deepest
 /// vertex of `other` below the face plane; > 0 means that face is a separating axis.
 FaceSeparation findMaxSeparation(const Body& reference, const Body& other) {
-  const Mat2 otherToReference = reference.rotation.transpose() * other.rotation;
-  const Vec2 otherOrigin = reference.toLocal(other.position);
+  const Mat2 referenceToOther = other.rotation.transpose() * reference.rotation;
+  const Vec2 referenceOrigin = other.toLocal(reference.position);
   FaceSeparation best;
   const Shape& polygon = reference.shape;
   for (int i = 0; i < static_cast<int>(polygon.vertices.size()); ++i) {
+    const Vec2 normal = referenceToOther * polygon.normals[i];
+    const Vec2 faceVertex = referenceOrigin + referenceToOther * polygon.vertices[i];
     double deepest = std::numeric_limits<double>::infinity();
     for (const Vec2& vertex : other.shape.vertices) {
-      const Vec2 local = otherOrigin + otherToReference * vertex;
-      deepest = std::min(deepest, polygon.normals[i].dot(local - polygon.vertices[i]));
+      deepest = std::min(deepest, normal.dot(vertex - faceVertex));
     }
     if (deepest > best.separation) best = {i, deepest};
   }

@@ -42,8 +42,13 @@ void SequentialImpulseSolver::prepare(const StepContext& context) {
     for (int i = 0; i < manifold.pointCount; ++i) {
       const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
       PointState state;
-      state.armA = point.point - a.position;
-      state.armB = point.point - b.position;
+      const Vec2 armA = point.point - a.position;
+      const Vec2 armB = point.point - b.position;
+      const Vec2 tangent = manifold.tangent();
+      state.normalTorqueArmA = cross(armA, manifold.normal);
+      state.normalTorqueArmB = cross(armB, manifold.normal);
+      state.tangentTorqueArmA = cross(armA, tangent);
+      state.tangentTorqueArmB = cross(armB, tangent);
       state.normalMass = 1.0 / unitImpulseResponse(a, b, point.point, manifold.normal);
       state.tangentMass = 1.0 / unitImpulseResponse(a, b, point.point, manifold.tangent());
       const double normalVelocity = impulse2d::relativeVelocity(a, b, point.point, manifold.normal);
@@ -94,11 +99,13 @@ void SequentialImpulseSolver::warmStart() {
   if (!settings_.warmStarting || !settings_.accumulateImpulses) return;
   for (const ManifoldState& manifold : manifoldStates_) {
     const Vec2 tangent = leftPerpendicular(manifold.normal);
+    BodyPair bodies = loadBodies(manifold);
     for (int i = 0; i < manifold.pointCount; ++i) {
       const PointState& point = states_[static_cast<size_t>(manifold.firstPoint + i)];
-      applyImpulse(manifold, point,
-                   point.normalImpulse * manifold.normal + point.tangentImpulse * tangent);
+      bodies.applyNormalImpulse(point, manifold.normal, point.normalImpulse);
+      bodies.applyTangentImpulse(point, tangent, point.tangentImpulse);
     }
+    storeBodies(manifold, bodies);
   }
 }
 
@@ -108,36 +115,41 @@ double SequentialImpulseSolver::solveManifold(const StepContext& context,
                                               const ManifoldState& manifold, int sweep) {
   std::array<PointImpulse, 2> impulses;
   PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
+  BodyPair bodies = loadBodies(manifold);
   if (manifold.block) {
-    solveNormalsTogether(manifold, impulses);
+    solveNormalsTogether(manifold, bodies, impulses);
   } else {
-    for (int i = 0; i < manifold.pointCount; ++i) impulses[i] = solveNormal(manifold, points[i]);
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      impulses[i] = solveNormal(manifold, points[i], bodies);
+    }
   }
   double largestChange = 0.0;
   for (int i = 0; i < manifold.pointCount; ++i) {
     PointImpulse& impulse = impulses[static_cast<size_t>(i)];
-    impulse.tangentImpulse = solveFriction(manifold, points[i], impulse.normalImpulse);
+    impulse.tangentImpulse = solveFriction(manifold, points[i], bodies, impulse.normalImpulse);
     largestChange = std::max(largestChange, std::abs(impulse.normalImpulse));
-    reportPoint(context, manifold, sweep, i, impulse);
+    reportPoint(context, manifold, bodies, sweep, i, impulse);
   }
+  storeBodies(manifold, bodies);
   return largestChange;
 }
 
 // The text's step: the relative normal velocity, the change wanted to reach the target, and the
 // impulse = normal mass × that change (clamped as accumulation says).
 inline SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNormal(
-    const ManifoldState& manifold, PointState& point) {
-  const double relativeNormalVelocity = relativeVelocity(manifold, point, manifold.normal);
+    const ManifoldState& manifold, PointState& point, BodyPair& bodies) {
+  const double relativeNormalVelocity = bodies.relativeNormalVelocity(point, manifold.normal);
   PointImpulse impulse;
   impulse.desiredChange = point.targetNormalVelocity - relativeNormalVelocity;
   impulse.normalImpulse = normalImpulseChange(point, point.normalMass * impulse.desiredChange);
-  applyImpulse(manifold, point, impulse.normalImpulse * manifold.normal);
+  bodies.applyNormalImpulse(point, manifold.normal, impulse.normalImpulse);
   return impulse;
 }
 
 // Both points of a flat contact at once: the new totals x solve the 2×2 complementarity problem
 // K x + q ≥ 0 ⟂ x ≥ 0, with q the velocity error the totals would leave if they were zero.
 inline void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& manifold,
+                                                          BodyPair& bodies,
                                                           std::array<PointImpulse, 2>& impulses) {
   PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
   Vec2 totals;
@@ -145,7 +157,7 @@ inline void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& m
   for (int i = 0; i < 2; ++i) {
     totals(i) = points[i].normalImpulse;
     velocityError(i) =
-        relativeVelocity(manifold, points[i], manifold.normal) - points[i].targetNormalVelocity;
+        bodies.relativeNormalVelocity(points[i], manifold.normal) - points[i].targetNormalVelocity;
     impulses[static_cast<size_t>(i)].desiredChange = -velocityError(i);
   }
   const Vec2 newTotals = solveTwoPointLcp(manifold.normalCoupling, manifold.inverseCoupling,
@@ -153,20 +165,20 @@ inline void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& m
   for (int i = 0; i < 2; ++i) {
     impulses[static_cast<size_t>(i)].normalImpulse = newTotals(i) - totals(i);
     points[i].normalImpulse = newTotals(i);
-    applyImpulse(manifold, points[i], (newTotals(i) - totals(i)) * manifold.normal);
+    bodies.applyNormalImpulse(points[i], manifold.normal, newTotals(i) - totals(i));
   }
 }
 
 // Friction the same way along the tangent: the impulse that stops the sliding, within Coulomb's
 // limit. Returns the friction impulse applied.
 inline double SequentialImpulseSolver::solveFriction(const ManifoldState& manifold,
-                                                     PointState& point,
+                                                     PointState& point, BodyPair& bodies,
                                                      double normalImpulseThisSweep) {
   const Vec2 tangent = leftPerpendicular(manifold.normal);
-  const double relativeTangentVelocity = relativeVelocity(manifold, point, tangent);
+  const double relativeTangentVelocity = bodies.relativeTangentVelocity(point, tangent);
   const double impulse = tangentImpulseChange(point, -point.tangentMass * relativeTangentVelocity,
                                               manifold.friction, normalImpulseThisSweep);
-  applyImpulse(manifold, point, impulse * tangent);
+  bodies.applyTangentImpulse(point, tangent, impulse);
   return impulse;
 }
 
@@ -225,8 +237,10 @@ void SequentialImpulseSolver::storeResults(const StepContext& context) const {
 // A traced step shows the bodies and manifolds as they are after each point's solve, so the
 // results are stored before each report; an untraced step stores them once, after the sweeps.
 void SequentialImpulseSolver::reportPoint(const StepContext& context, const ManifoldState& manifold,
-                                          int sweep, int point, const PointImpulse& impulse) const {
+                                          const BodyPair& bodies, int sweep, int point,
+                                          const PointImpulse& impulse) {
   if (context.observer == nullptr) return;
+  storeBodies(manifold, bodies);
   storeResults(context);
   context.report({SolverEvent::Phase::Velocity, sweep, manifold.manifold, point,
                   impulse.desiredChange, impulse.normalImpulse, impulse.tangentImpulse});

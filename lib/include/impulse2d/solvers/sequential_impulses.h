@@ -42,8 +42,14 @@ class SequentialImpulseSolver : public ContactSolver {
   };
   /// Per contact point, computed once before the sweeps (Box2D-Lite's PreStep).
   struct PointState {
-    Vec2 armA = Vec2::Zero();           ///< contact point minus A's centre of mass
-    Vec2 armB = Vec2::Zero();           ///< contact point minus B's centre of mass
+    /// The arms' torque per unit impulse along the normal and the tangent, r × n and r × t for
+    /// A's arm and B's (the arm: the contact point minus the centre of mass). With them the
+    /// relative velocity is n·(vB − vA) + ωB (rB × n) − ωA (rA × n), and an impulse λ turns a body
+    /// by λ (r × n)/I.
+    double normalTorqueArmA = 0.0;
+    double normalTorqueArmB = 0.0;
+    double tangentTorqueArmA = 0.0;
+    double tangentTorqueArmB = 0.0;
     double normalMass = 0.0;            ///< impulse per unit of normal velocity change
     double tangentMass = 0.0;           ///< impulse per unit of tangent velocity change
     double targetNormalVelocity = 0.0;  ///< bounce, bias or a gap's allowed approach
@@ -64,6 +70,38 @@ class SequentialImpulseSolver : public ContactSolver {
     Mat2 normalCoupling = Mat2::Zero();   ///< K, when block
     Mat2 inverseCoupling = Mat2::Zero();  ///< K⁻¹, when block
   };
+  /// The two bodies of the contact being solved, copied into locals for its solves and written
+  /// back after them: each solve reads the velocities the one before it changed, without a round
+  /// trip through memory (Box2D's vA, wA, vB, wB).
+  struct BodyPair {
+    SolverBody a;
+    SolverBody b;
+    /// The relative velocity (B's material minus A's) at a point, along `direction`, from the
+    /// arms' torques along it (PointState).
+    double relativeVelocity(const Vec2& direction, double torqueArmA, double torqueArmB) const {
+      return (b.velocity - a.velocity).dot(direction) + b.angularVelocity * torqueArmB -
+             a.angularVelocity * torqueArmA;
+    }
+    /// +λ·direction to B, −λ·direction to A at a point: Δv = λ·direction/m, Δω = λ (r × d)/I.
+    void applyImpulse(const Vec2& direction, double torqueArmA, double torqueArmB, double impulse) {
+      a.velocity -= (a.inverseMass * impulse) * direction;
+      a.angularVelocity -= a.inverseInertia * impulse * torqueArmA;
+      b.velocity += (b.inverseMass * impulse) * direction;
+      b.angularVelocity += b.inverseInertia * impulse * torqueArmB;
+    }
+    double relativeNormalVelocity(const PointState& point, const Vec2& normal) const {
+      return relativeVelocity(normal, point.normalTorqueArmA, point.normalTorqueArmB);
+    }
+    double relativeTangentVelocity(const PointState& point, const Vec2& tangent) const {
+      return relativeVelocity(tangent, point.tangentTorqueArmA, point.tangentTorqueArmB);
+    }
+    void applyNormalImpulse(const PointState& point, const Vec2& normal, double impulse) {
+      applyImpulse(normal, point.normalTorqueArmA, point.normalTorqueArmB, impulse);
+    }
+    void applyTangentImpulse(const PointState& point, const Vec2& tangent, double impulse) {
+      applyImpulse(tangent, point.tangentTorqueArmA, point.tangentTorqueArmB, impulse);
+    }
+  };
   /// What one point's solve did in a sweep, for the observer.
   struct PointImpulse {
     double desiredChange = 0.0;
@@ -76,34 +114,25 @@ class SequentialImpulseSolver : public ContactSolver {
   void addManifoldState(const StepContext& context, int manifold);
   void warmStart();
   double solveManifold(const StepContext& context, const ManifoldState& manifold, int sweep);
-  PointImpulse solveNormal(const ManifoldState& manifold, PointState& point);
-  void solveNormalsTogether(const ManifoldState& manifold, std::array<PointImpulse, 2>& impulses);
-  double solveFriction(const ManifoldState& manifold, PointState& point,
+  PointImpulse solveNormal(const ManifoldState& manifold, PointState& point, BodyPair& bodies);
+  void solveNormalsTogether(const ManifoldState& manifold, BodyPair& bodies,
+                            std::array<PointImpulse, 2>& impulses);
+  double solveFriction(const ManifoldState& manifold, PointState& point, BodyPair& bodies,
                        double normalImpulseThisSweep);
-  /// The relative velocity (B's material minus A's) at the point, along `direction`.
-  double relativeVelocity(const ManifoldState& manifold, const PointState& point,
-                          const Vec2& direction) const {
-    const SolverBody& a = solverBodies_[static_cast<size_t>(manifold.bodyA)];
-    const SolverBody& b = solverBodies_[static_cast<size_t>(manifold.bodyB)];
-    const Vec2 velocityB = b.velocity + cross(b.angularVelocity, point.armB);
-    const Vec2 velocityA = a.velocity + cross(a.angularVelocity, point.armA);
-    return (velocityB - velocityA).dot(direction);
+  BodyPair loadBodies(const ManifoldState& manifold) const {
+    return {solverBodies_[static_cast<size_t>(manifold.bodyA)],
+            solverBodies_[static_cast<size_t>(manifold.bodyB)]};
   }
-  /// +P to B, −P to A at the point: Δv = P/m, Δω = (r × P)/I.
-  void applyImpulse(const ManifoldState& manifold, const PointState& point, const Vec2& impulse) {
-    SolverBody& a = solverBodies_[static_cast<size_t>(manifold.bodyA)];
-    SolverBody& b = solverBodies_[static_cast<size_t>(manifold.bodyB)];
-    a.velocity -= a.inverseMass * impulse;
-    a.angularVelocity -= a.inverseInertia * cross(point.armA, impulse);
-    b.velocity += b.inverseMass * impulse;
-    b.angularVelocity += b.inverseInertia * cross(point.armB, impulse);
+  void storeBodies(const ManifoldState& manifold, const BodyPair& bodies) {
+    solverBodies_[static_cast<size_t>(manifold.bodyA)] = bodies.a;
+    solverBodies_[static_cast<size_t>(manifold.bodyB)] = bodies.b;
   }
   double normalImpulseChange(PointState& point, double impulse) const;
   double tangentImpulseChange(PointState& point, double impulse, double friction,
                               double normalImpulseThisSweep) const;
   void storeResults(const StepContext& context) const;
-  void reportPoint(const StepContext& context, const ManifoldState& manifold, int sweep, int point,
-                   const PointImpulse& impulse) const;
+  void reportPoint(const StepContext& context, const ManifoldState& manifold,
+                   const BodyPair& bodies, int sweep, int point, const PointImpulse& impulse);
 
   SequentialImpulseSettings settings_;
   std::vector<SolverBody> solverBodies_;
