@@ -42,6 +42,7 @@ const std::vector<Variant> kVariants = {{"sequential_cold", "sequential", false}
 
 std::unique_ptr<ContactSolver> solverAt(const Variant& variant, int k, SolverSettings settings) {
   settings.sequential.velocityIterations = k;
+  settings.sequential.convergedImpulseChange = 0.0;  // exactly k sweeps
   settings.sequential.warmStarting = variant.warm;
   settings.micro.velocityIterationsPerContact = k;
   return makeSolver(variant.method, settings);

@@ -29,6 +29,7 @@ const std::vector<ReferenceError>& errorsOf(World& world) {
 double sequentialError(int iterations, int steps) {
   Scene scene = stackScene("sequential", 10, 0.6);
   scene.solverSettings.sequential.velocityIterations = iterations;
+  scene.solverSettings.sequential.convergedImpulseChange = 0.0;  // exactly `iterations` sweeps
   auto world = watchedWorld(scene);
   runSteps(*world, steps);
   return errorsOf(*world).back().impulseError;

@@ -178,7 +178,30 @@ TEST_CASE("an observer sees one event per point per sweep", "[sequential][trace]
   CountingObserver observer;
   world->setObserver(&observer);
   world->step();
-  const int sweeps = SequentialImpulseSettings{}.velocityIterations;
+  const int sweeps = world->solver().lastReport().iterations;
+  CHECK(sweeps == SequentialImpulseSettings{}.velocityIterations);  // from rest: every sweep
   CHECK(observer.velocityEvents == sweeps * contactPointCount(*world));
   CHECK(observer.lastSweep == sweeps - 1);
+}
+
+TEST_CASE("the sweeps stop once converged: a settled stack takes few, with the forces of all 20",
+          "[sequential][converged]") {
+  constexpr int kBoxes = 10;
+  const int allSweeps = SequentialImpulseSettings{}.velocityIterations;
+  Scene scene = stackScene("sequential", kBoxes, 0.6);
+  auto early = buildWorld(scene);
+  scene.solverSettings.sequential.convergedImpulseChange = 0.0;
+  auto full = buildWorld(scene);
+  early->step();
+  full->step();
+  CHECK(early->solver().lastReport().iterations == allSweeps);  // from rest the weight needs all
+  runSteps(*early, stepsIn(2.0));
+  runSteps(*full, stepsIn(2.0));
+  INFO("sweeps in a settled step: " << early->solver().lastReport().iterations);
+  CHECK(early->solver().lastReport().iterations <= allSweeps / 4);
+  for (int level = 0; level < kBoxes; ++level) {
+    INFO("level " << level);
+    CHECK(contactForce(*early, level, level + 1) ==
+          Approx(contactForce(*full, level, level + 1)).epsilon(1e-4));
+  }
 }

@@ -66,6 +66,10 @@ Scene withMethod(Scene scene, const std::string& solver, int iterations) {
   if (iterations > 0 && !iterationKey(solver).empty()) {
     applySetting(scene, "solver." + iterationKey(solver) + "=" + std::to_string(iterations));
   }
+  // k sweeps means exactly k, as in Box2D: no early stop once converged (the defaults keep it).
+  if (iterations > 0 && solver == "sequential") {
+    applySetting(scene, "solver.converged_impulse_change=0");
+  }
   return scene;
 }
 

@@ -63,6 +63,7 @@ void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
 
 std::vector<SettingField> describe(SequentialImpulseSettings& s) {
   std::vector<SettingField> fields = {{"velocity_iterations", &s.velocityIterations},
+                                      {"converged_impulse_change", &s.convergedImpulseChange},
                                       {"accumulate_impulses", &s.accumulateImpulses},
                                       {"warm_starting", &s.warmStarting}};
   addFields(fields, s.targets);

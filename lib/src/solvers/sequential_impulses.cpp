@@ -21,8 +21,19 @@ void SequentialImpulseSolver::solveVelocities(const StepContext& context) {
       report_.residual = std::max(report_.residual, solveManifold(context, manifold, sweep));
     }
     report_.iterations = sweep + 1;
+    if (converged()) break;
   }
   storeResults(context);
+}
+
+// Converged: the last sweep changed no impulse (normal or friction) by more than the settings'
+// fraction of the largest normal total.
+bool SequentialImpulseSolver::converged() const {
+  if (settings_.convergedImpulseChange <= 0.0) return false;
+  double largestTotal = 0.0;
+  for (const PointState& point : states_)
+    largestTotal = std::max(largestTotal, point.normalImpulse);
+  return report_.residual <= settings_.convergedImpulseChange * largestTotal;
 }
 
 // PreStep: the masses from the unit-impulse response, and the target separating velocity from the
@@ -110,7 +121,8 @@ void SequentialImpulseSolver::warmStart() {
 }
 
 // One contact in one sweep: the normal impulses of its points (together, or one at a time), then
-// friction at each point. Returns the largest |normal impulse change|, the sweep's residual.
+// friction at each point. Returns the largest impulse change (normal or friction), the sweep's
+// residual.
 double SequentialImpulseSolver::solveManifold(const StepContext& context,
                                               const ManifoldState& manifold, int sweep) {
   std::array<PointImpulse, 2> impulses;
@@ -127,7 +139,8 @@ double SequentialImpulseSolver::solveManifold(const StepContext& context,
   for (int i = 0; i < manifold.pointCount; ++i) {
     PointImpulse& impulse = impulses[static_cast<size_t>(i)];
     impulse.tangentImpulse = solveFriction(manifold, points[i], bodies, impulse.normalImpulse);
-    largestChange = std::max(largestChange, std::abs(impulse.normalImpulse));
+    largestChange = std::max(
+        {largestChange, std::abs(impulse.normalImpulse), std::abs(impulse.tangentImpulse)});
     reportPoint(context, manifold, bodies, sweep, i, impulse);
   }
   storeBodies(manifold, bodies);

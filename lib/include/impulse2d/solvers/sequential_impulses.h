@@ -27,7 +27,8 @@ class SequentialImpulseSolver : public ContactSolver {
   void solveVelocities(const StepContext& context) override;
   /// The shared position pass (position_correction.h): moves positions, never velocities.
   void solvePositions(const StepContext& context) override;
-  /// iterations: sweeps made; residual: the largest normal impulse change in the last sweep (N s).
+  /// iterations: sweeps made; residual: the largest impulse change (normal or friction) in the last
+  /// sweep (N s).
   SolveReport lastReport() const override { return report_; }
 
   const SequentialImpulseSettings& settings() const { return settings_; }
@@ -113,6 +114,7 @@ class SequentialImpulseSolver : public ContactSolver {
   void prepareBodies(const StepContext& context);
   void addManifoldState(const StepContext& context, int manifold);
   void warmStart();
+  bool converged() const;
   double solveManifold(const StepContext& context, const ManifoldState& manifold, int sweep);
   PointImpulse solveNormal(const ManifoldState& manifold, PointState& point, BodyPair& bodies);
   void solveNormalsTogether(const ManifoldState& manifold, BodyPair& bodies,
