@@ -60,7 +60,7 @@ const std::vector<MethodRun> kPyramidMethods = {
     {"box2d 8+3 iterations", "box2d", 8, 0.0},
     {"sequential 8 iterations + position pass", "sequential", 8, 0.0},
     {"sequential 16 iterations + position pass", "sequential", 16, 0.0},
-    {"sequential 20 iterations (default) + position pass", "sequential", 0, 0.0},
+    {"sequential ≤ 40 sweeps, stop once converged (default) + position pass", "sequential", 0, 0.0},
     {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
     {"micro 200 per contact (default)", "micro", 0, kShortRunTime},
     {"reference (active set)", "reference", 0, kShortRunTime},
@@ -69,7 +69,7 @@ const std::vector<MethodRun> kPyramidMethods = {
 const std::vector<MethodRun> kStackMethods = {
     {"box2d 8+3", "box2d", 8, 0.0},
     {"sequential 8", "sequential", 8, 0.0},
-    {"sequential 20 (default)", "sequential", 0, 0.0},
+    {"sequential ≤ 40, converged (default)", "sequential", 0, 0.0},
     {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
     {"micro 200 per contact (default)", "micro", 0, 0.0},
     {"reference", "reference", 0, 0.0},

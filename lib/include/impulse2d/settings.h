@@ -127,16 +127,16 @@ struct BlockSolveSettings {
 
 /// Sequential impulses ("Explaining the rigid body solver", Box2D-Lite).
 struct SequentialImpulseSettings {
-  /// Sweeps over all contacts per step. A stack of n boxes starting from rest needs about n
-  /// sweeps before the weight reaches the bottom within one step; with 20, a 20-box stack
-  /// settles within the slop (Box2D's 8 let it sink about 1 cm per contact and sway).
-  int velocityIterations = 20;
+  /// Most sweeps over all contacts per step. A stack of n boxes starting from rest needs about n
+  /// sweeps before the weight reaches the bottom within one step, and a 40-row pyramid rests only
+  /// with about 40; once a pile rests the sweeps stop after one (convergedImpulseChange).
+  int velocityIterations = 40;
   /// The sweeps stop early once a whole sweep changed no impulse (normal or friction) by more
   /// than this fraction of the largest normal total: the answer has converged, and the sweeps
-  /// left would not move it. A warm-started pile at rest converges in a few sweeps; a stack
+  /// left would not move it. A warm-started pile at rest converges in one sweep; a stack
   /// starting from rest still needs all of them. At 1e-6 the settled drift, penetration and
-  /// stack force error of pyramid20 and stack20 equal those of 20 full sweeps to three digits
-  /// (docs/sequential-impulses.md). 0: always velocityIterations sweeps, the text's method.
+  /// stack force error equal those of full sweeps to three digits (docs/sequential-impulses.md). 0:
+  /// always velocityIterations sweeps, the text's method.
   double convergedImpulseChange = 1e-6;
   /// Clamp each contact's running total of impulse rather than each impulse.
   bool accumulateImpulses = true;
