@@ -135,8 +135,8 @@ struct SequentialImpulseSettings {
   /// than this fraction of the largest normal total: the answer has converged, and the sweeps
   /// left would not move it. A warm-started pile at rest converges in one sweep; a stack
   /// starting from rest still needs all of them. At 1e-6 the settled drift, penetration and
-  /// stack force error equal those of full sweeps to three digits (docs/sequential-impulses.md). 0:
-  /// always velocityIterations sweeps, the text's method.
+  /// stack force error equal those of full sweeps to three digits (docs/sequential-impulses.md).
+  /// 0 always makes velocityIterations sweeps, the text's method.
   double convergedImpulseChange = 1e-6;
   /// Clamp each contact's running total of impulse rather than each impulse.
   bool accumulateImpulses = true;
