@@ -5,8 +5,10 @@
 
 #include "impulse2d/solvers/lcp.h"
 
+using impulse2d::LemkePath;
 using impulse2d::LemkeSettings;
 using impulse2d::naturalResidual;
+using impulse2d::RatioTest;
 using impulse2d::solveLemke;
 
 namespace {
@@ -91,6 +93,35 @@ TEST_CASE("random singular positive semi-definite problems with a solution are s
     INFO("trial " << trial << ": " << solution.failure);
     REQUIRE(solution.solved);
     CHECK(naturalResidual(m, q, solution.z) < 1e-10 * (1.0 + solution.z.cwiseAbs().maxCoeff()));
+  }
+}
+
+TEST_CASE("every path — Harris's ratio test, other covering vectors — reaches a solution",
+          "[lcp][lemke]") {
+  // The same kind of problems as above: each path is another route to the solutions of a
+  // positive semi-definite problem, so each must end at one.
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> cover(0.5, 2.0);
+  std::bernoulli_distribution active(0.5);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 4 + trial;
+    const Eigen::MatrixXd a =
+        Eigen::MatrixXd::NullaryExpr(n, n / 2, [&] { return normal(random); });
+    const Eigen::MatrixXd m = a * a.transpose();
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd w = Eigen::VectorXd::Zero(n);
+    for (int i = 0; i < n; ++i) (active(random) ? z(i) : w(i)) = std::abs(normal(random));
+    const Eigen::VectorXd q = w - m * z;
+    const Eigen::VectorXd covering = Eigen::VectorXd::NullaryExpr(n, [&] { return cover(random); });
+    for (const LemkePath& path :
+         {LemkePath{Eigen::VectorXd::Ones(n), RatioTest::Harris},
+          LemkePath{covering, RatioTest::Lexicographic}, LemkePath{covering, RatioTest::Harris}}) {
+      const auto solution = solveLemke(m, q, path, LemkeSettings{});
+      INFO("trial " << trial << ": " << solution.failure);
+      REQUIRE(solution.solved);
+      CHECK(naturalResidual(m, q, solution.z) < 1e-10 * (1.0 + solution.z.cwiseAbs().maxCoeff()));
+    }
   }
 }
 

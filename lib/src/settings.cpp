@@ -76,9 +76,12 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
 std::vector<SettingField> describe(ReferenceSolverSettings& s) {
   std::vector<SettingField> fields = {{"residual_tolerance", &s.residualTolerance},
                                       {"max_pivots", &s.lemke.maxPivots},
+                                      {"max_pivots_per_variable", &s.lemke.maxPivotsPerVariable},
                                       {"pivot_tolerance", &s.lemke.pivotTolerance},
                                       {"tie_tolerance", &s.lemke.tieTolerance},
                                       {"degeneracy_perturbation", &s.degeneracyPerturbation},
+                                      {"covering_retries", &s.coveringRetries},
+                                      {"harris_tolerance", &s.lemke.harrisTolerance},
                                       {"lemke_island_points", &s.lemkeIslandPoints},
                                       {"lemke_fallback_points", &s.lemkeFallbackPoints},
                                       {"guess_sweeps", &s.activeSet.guessSweeps},

@@ -4,12 +4,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <unordered_map>
 
 namespace impulse2d {
 namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
 using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// A set of states solved this often again means the flips cycle: the flip rule's counters may
+/// send a second visit elsewhere, a third no more.
+constexpr int kVisitsBeforeCycling = 2;
 
 /// A point whose answer breaks its state, the state it should take and by how much (N s).
 struct Violation {
@@ -253,7 +259,16 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
   FlipRule flips(settings.blockFailures);
   ActiveSetAnswer answer;
   Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu;
+  std::unordered_map<std::string, int> visits;  // how often each set of states was solved
   while (answer.factorizations < settings.maxFactorizations) {
+    std::string key(states.size(), '\0');
+    for (size_t i = 0; i < states.size(); ++i) key[i] = static_cast<char>(states[i]);
+    if (++visits[key] > kVisitsBeforeCycling) {
+      answer.failure = "active set: cycling (the same states for the " +
+                       std::to_string(kVisitsBeforeCycling + 1) + "th time at factorization " +
+                       std::to_string(answer.factorizations) + ")";
+      return answer;
+    }
     Triplets triplets = bodyRows;
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
     rhs.head(bodyUnknowns) = problem.velocity;

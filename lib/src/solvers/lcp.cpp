@@ -9,7 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
+
+#include <Eigen/LU>
 
 namespace impulse2d {
 namespace {
@@ -21,12 +24,13 @@ struct LemkeTableau {
   std::vector<int> basicVariable;
 };
 
-/// The column of the constraint matrix [I, −M, −1] that belongs to a variable.
-Eigen::VectorXd constraintColumn(const Eigen::MatrixXd& m, int variable) {
+/// The column of the constraint matrix [I, −M, −d] that belongs to a variable.
+Eigen::VectorXd constraintColumn(const Eigen::MatrixXd& m, const Eigen::VectorXd& covering,
+                                 int variable) {
   const int n = static_cast<int>(m.rows());
   if (variable < n) return Eigen::VectorXd::Unit(n, variable);
   if (variable < 2 * n) return -m.col(variable - n);
-  return -Eigen::VectorXd::Ones(n);
+  return -covering;
 }
 
 /// w_i and z_i are complements: exactly one of them may be basic at a solution.
@@ -87,23 +91,72 @@ int leavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
   return candidates.front();
 }
 
-/// The first pivot brings z0 in at the most negative q; ties go to the last such row, which is
+/// Harris's ratio test: the step may overshoot a basic variable by `harrisTolerance` (relative to
+/// the largest basic value), and among the rows it then allows the one with the largest pivot is
+/// taken. It trades the lexicographic rule's guard against cycling (the pivot limit still ends a
+/// cycle) for never pivoting on a small entry when a larger one is nearly as good: on a landing
+/// pile the lexicographic rule can take an entry of 1e-8, and the path never recovers.
+int harrisLeavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
+                     const LemkeSettings& options, int artificial) {
+  const double smallestPivot =
+      options.pivotTolerance * std::max(1.0, direction.cwiseAbs().maxCoeff());
+  const double slack =
+      options.harrisTolerance * std::max(1.0, tableau.basicValues.cwiseAbs().maxCoeff());
+  double bound = std::numeric_limits<double>::infinity();
+  for (int row = 0; row < direction.size(); ++row) {
+    if (direction(row) > smallestPivot) {
+      bound = std::min(bound, (tableau.basicValues(row) + slack) / direction(row));
+    }
+  }
+  int chosen = -1;
+  for (int row = 0; row < direction.size(); ++row) {
+    if (!(direction(row) > smallestPivot) || tableau.basicValues(row) / direction(row) > bound) {
+      continue;
+    }
+    if (tableau.basicVariable[static_cast<size_t>(row)] == artificial) return row;
+    if (chosen < 0 || direction(row) > direction(chosen)) chosen = row;
+  }
+  return chosen;
+}
+
+/// The first pivot brings z0 in at the most negative q/d; ties go to the last such row, which is
 /// the lexicographic choice for the start from B = I.
-int firstLeavingRow(const Eigen::VectorXd& q) {
+int firstLeavingRow(const Eigen::VectorXd& q, const Eigen::VectorXd& covering) {
   int row = 0;
   for (int i = 1; i < q.size(); ++i) {
-    if (q(i) <= q(row)) row = i;
+    if (q(i) / covering(i) <= q(row) / covering(row)) row = i;
   }
   return row;
 }
 
-LcpSolution extractSolution(const LemkeTableau& tableau, const Eigen::MatrixXd& m,
-                            const Eigen::VectorXd& q, LcpSolution solution) {
-  const int n = static_cast<int>(q.size());
-  solution.z = Eigen::VectorXd::Zero(n);
+/// z from the basic values of a finished path.
+Eigen::VectorXd impulsesOf(const LemkeTableau& tableau, const Eigen::VectorXd& values, int n) {
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
   for (int row = 0; row < n; ++row) {
     const int variable = tableau.basicVariable[static_cast<size_t>(row)];
-    if (variable >= n && variable < 2 * n) solution.z(variable - n) = tableau.basicValues(row);
+    if (variable >= n && variable < 2 * n) z(variable - n) = std::max(values(row), 0.0);
+  }
+  return z;
+}
+
+/// The basic values solved afresh from the final basis (one factorization and one step of
+/// iterative refinement): a long path of rank-one updates leaves round-off in B⁻¹ that this
+/// removes. Kept only where it makes the answer better.
+LcpSolution extractSolution(const LemkeTableau& tableau, const Eigen::MatrixXd& m,
+                            const Eigen::VectorXd& q, const Eigen::VectorXd& covering,
+                            LcpSolution solution) {
+  const int n = static_cast<int>(q.size());
+  solution.z = impulsesOf(tableau, tableau.basicValues, n);
+  Eigen::MatrixXd basis(n, n);
+  for (int row = 0; row < n; ++row) {
+    basis.col(row) = constraintColumn(m, covering, tableau.basicVariable[static_cast<size_t>(row)]);
+  }
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(basis);
+  Eigen::VectorXd values = lu.solve(q);
+  values += lu.solve(q - basis * values);
+  const Eigen::VectorXd refined = impulsesOf(tableau, values, n);
+  if (refined.allFinite() && naturalResidual(m, q, refined) < naturalResidual(m, q, solution.z)) {
+    solution.z = refined;
   }
   solution.w = m * solution.z + q;
   solution.solved = true;
@@ -120,6 +173,12 @@ LcpSolution failed(LcpSolution solution, const std::string& reason) {
 
 LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
                        const LemkeSettings& options) {
+  return solveLemke(m, q, LemkePath{Eigen::VectorXd::Ones(q.size()), RatioTest::Lexicographic},
+                    options);
+}
+
+LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const LemkePath& path,
+                       const LemkeSettings& options) {
   const int n = static_cast<int>(q.size());
   LcpSolution solution;
   if (n == 0 || q.minCoeff() >= 0.0) {
@@ -133,19 +192,25 @@ LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
   for (int i = 0; i < n; ++i) tableau.basicVariable[static_cast<size_t>(i)] = i;
   const int artificial = 2 * n;
   int entering = artificial;
-  Eigen::VectorXd direction = -Eigen::VectorXd::Ones(n);
-  int row = firstLeavingRow(q);
+  const int pivotLimit = static_cast<int>(
+      std::min<long>(options.maxPivots, static_cast<long>(options.maxPivotsPerVariable) * n));
+  Eigen::VectorXd direction = -path.covering;
+  int row = firstLeavingRow(q, path.covering);
   for (solution.pivots = 1;; ++solution.pivots) {
     const int leaving = tableau.basicVariable[static_cast<size_t>(row)];
     pivot(tableau, direction, row, entering);
-    if (leaving == artificial) return extractSolution(tableau, m, q, solution);
-    if (solution.pivots >= options.maxPivots) {
-      return failed(solution, "Lemke: pivot limit of " + std::to_string(options.maxPivots) +
+    if (path.ratioTest == RatioTest::Harris)
+      tableau.basicValues = tableau.basicValues.cwiseMax(0.0);
+    if (leaving == artificial) return extractSolution(tableau, m, q, path.covering, solution);
+    if (solution.pivots >= pivotLimit) {
+      return failed(solution, "Lemke: pivot limit of " + std::to_string(pivotLimit) +
                                   " reached without a solution");
     }
     entering = complement(leaving, n);
-    direction.noalias() = tableau.basisInverse * constraintColumn(m, entering);
-    row = leavingRow(tableau, direction, options, artificial);
+    direction.noalias() = tableau.basisInverse * constraintColumn(m, path.covering, entering);
+    row = path.ratioTest == RatioTest::Harris
+              ? harrisLeavingRow(tableau, direction, options, artificial)
+              : leavingRow(tableau, direction, options, artificial);
     if (row < 0) {
       return failed(solution, "Lemke: secondary ray after " + std::to_string(solution.pivots) +
                                   " pivots (no solution found from this start)");

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -87,19 +88,47 @@ void formulateLcp(const Eigen::MatrixXd& delassus, const Eigen::VectorXd& fricti
   }
 }
 
-/// Lemke on the problem as stated; on a ray (degeneracy defeating the floating-point
-/// lexicographic rule) once more on a slightly perturbed q.
-LcpSolution solveLcpWithRetry(const Eigen::MatrixXd& matrix, const Eigen::VectorXd& vector,
-                              const ReferenceSolverSettings& settings) {
-  const LcpSolution solution = solveLemke(matrix, vector, settings.lemke);
-  if (solution.solved || vector.size() == 0) return solution;
-  const int size = static_cast<int>(vector.size());
-  const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
-  const double scale = settings.degeneracyPerturbation * vector.cwiseAbs().maxCoeff();
-  LcpSolution retry = solveLemke(matrix, vector + scale * growing, settings.lemke);
-  retry.pivots += solution.pivots;
-  if (!retry.solved) retry.failure = solution.failure + "; perturbed retry: " + retry.failure;
-  return retry;
+/// Covering vector number k ≥ 1 of the retries: entries in [0.5, 2), the same on every machine.
+Eigen::VectorXd retryCovering(int size, int k) {
+  std::mt19937 bits(static_cast<std::mt19937::result_type>(k));
+  Eigen::VectorXd covering(size);
+  for (int i = 0; i < size; ++i) covering(i) = 0.5 + 1.5 * (bits() / 4294967296.0);
+  return covering;
+}
+
+/// One Lemke attempt on an island: a path, and whether q is perturbed.
+struct LemkeAttempt {
+  LemkePath path;
+  bool perturbed = false;
+  std::string name;
+};
+
+/// The attempts in the order they are tried: the lexicographic path, the same on a slightly
+/// perturbed q (the textbook remedy for degeneracy), Harris's ratio test, then both ratio tests
+/// along `coveringRetries` other covering vectors. Each answer is checked against the physical
+/// conditions of the unperturbed problem; the first that passes is used.
+std::vector<LemkeAttempt> lemkeAttempts(int size, int coveringRetries) {
+  std::vector<LemkeAttempt> attempts;
+  const auto add = [&attempts](const Eigen::VectorXd& covering, RatioTest test, bool perturbed,
+                               const std::string& name) {
+    LemkeAttempt attempt;
+    attempt.path.covering = covering;
+    attempt.path.ratioTest = test;
+    attempt.perturbed = perturbed;
+    attempt.name = name;
+    attempts.push_back(attempt);
+  };
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(size);
+  add(ones, RatioTest::Lexicographic, false, "");
+  add(ones, RatioTest::Lexicographic, true, "perturbed retry");
+  add(ones, RatioTest::Harris, false, "Harris's ratio test");
+  for (int k = 1; k <= coveringRetries; ++k) {
+    const Eigen::VectorXd covering = retryCovering(size, k);
+    const std::string name = "covering vector " + std::to_string(k);
+    add(covering, RatioTest::Lexicographic, false, name);
+    add(covering, RatioTest::Harris, false, name + " with Harris's test");
+  }
+  return attempts;
 }
 
 /// The Jacobian row of a relative velocity along `direction` at `point` on one body:
@@ -265,11 +294,8 @@ void ReferenceSolver::solveIsland(const StepContext& context, const std::vector<
   const LcpSolution solution = solveByLemke(island);
   report_.iterations += solution.pivots;
   if (!solution.solved) fail(failure + solution.failure);
-  for (int k = 0; k < points; ++k) {
-    const int ri = kVariablesPerPoint * k;
-    impulses.segment<2>(2 * island[static_cast<size_t>(k)]) << solution.z(ri + NormalImpulse),
-        solution.z(ri + PositiveFriction) - solution.z(ri + NegativeFriction);
-  }
+  const Eigen::VectorXd answer = islandImpulses(island, solution.z);
+  for (const int point : island) impulses.segment<2>(2 * point) = answer.segment<2>(2 * point);
 }
 
 /// The island's rows and columns of the Delassus matrix (islands do not couple).
@@ -307,7 +333,47 @@ LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const 
   Eigen::MatrixXd matrix;
   Eigen::VectorXd vector;
   formulateLcp(Eigen::MatrixXd(islandDelassus(island)), friction, free, matrix, vector);
-  return solveLcpWithRetry(matrix, vector, settings_);
+  const int size = static_cast<int>(vector.size());
+  const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
+  const double perturbation =
+      size > 0 ? settings_.degeneracyPerturbation * vector.cwiseAbs().maxCoeff() : 0.0;
+  std::string failures;
+  int pivots = 0;
+  for (const LemkeAttempt& attempt : lemkeAttempts(size, settings_.coveringRetries)) {
+    LcpSolution solution = solveLemke(
+        matrix, attempt.perturbed ? Eigen::VectorXd(vector + perturbation * growing) : vector,
+        attempt.path, settings_.lemke);
+    pivots += solution.pivots;
+    if (solution.solved) {
+      const double violation = residualOver(island, islandImpulses(island, solution.z));
+      if (violation <= settings_.residualTolerance) {
+        solution.pivots = pivots;
+        return solution;
+      }
+      std::ostringstream reason;
+      reason << "Lemke: relative residual " << violation << " exceeds the tolerance "
+             << settings_.residualTolerance << " after " << solution.pivots << " pivots";
+      solution.failure = reason.str();
+    }
+    failures +=
+        attempt.name.empty() ? solution.failure : "; " + attempt.name + ": " + solution.failure;
+  }
+  LcpSolution failed;
+  failed.pivots = pivots;
+  failed.failure = failures;
+  return failed;
+}
+
+// The island's (λn, λt) from the LCP's z, placed in the layout of all points.
+Eigen::VectorXd ReferenceSolver::islandImpulses(const std::vector<int>& island,
+                                                const Eigen::VectorXd& z) const {
+  Eigen::VectorXd impulses = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
+  for (size_t k = 0; k < island.size(); ++k) {
+    const int ri = kVariablesPerPoint * static_cast<int>(k);
+    impulses.segment<2>(2 * island[k]) << z(ri + NormalImpulse),
+        z(ri + PositiveFriction) - z(ri + NegativeFriction);
+  }
+  return impulses;
 }
 
 ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
@@ -358,17 +424,26 @@ ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
 // so an error in the formulation would show here too.
 double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
   if (impulses.size() == 0) return 0.0;
+  std::vector<int> all(rows_.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  return residualOver(all, impulses);
+}
+
+// The worst violated condition of the listed points (impulses in the layout of all points),
+// relative to their impulse scale.
+double ReferenceSolver::residualOver(const std::vector<int>& points,
+                                     const Eigen::VectorXd& impulses) const {
   const Eigen::VectorXd velocity = freeVelocity_ + delassus_ * impulses;
   const Eigen::VectorXd diagonal = delassus_.diagonal();
   double worst = 0.0;
-  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+  for (const int i : points) {
     const PointRow& row = rows_[static_cast<size_t>(i)];
     worst = std::max(
         worst, pointViolation(impulses(2 * i), impulses(2 * i + 1),
                               velocity(2 * i) - row.targetNormalVelocity, velocity(2 * i + 1),
                               row.friction, 1.0 / diagonal(2 * i), 1.0 / diagonal(2 * i + 1)));
   }
-  const double scale = impulseScale(impulses);
+  const double scale = impulseScale(points, impulses);
   return scale > 0.0 ? worst / scale : worst;
 }
 
@@ -378,12 +453,13 @@ double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
 // point's cancelling impulses (what stops its normal and tangent motion alone, velocity over
 // effective mass) and the momenta of the bodies in contact (m|v|, and I|ω| over the point's lever
 // arm).
-double ReferenceSolver::impulseScale(const Eigen::VectorXd& impulses) const {
-  double scale = impulses.cwiseAbs().maxCoeff();
+double ReferenceSolver::impulseScale(const std::vector<int>& points,
+                                     const Eigen::VectorXd& impulses) const {
+  double scale = 0.0;
   const Eigen::VectorXd diagonal = delassus_.diagonal();
-  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+  for (const int i : points) {
     const PointRow& row = rows_[static_cast<size_t>(i)];
-    scale = std::max({scale,
+    scale = std::max({scale, std::abs(impulses(2 * i)), std::abs(impulses(2 * i + 1)),
                       std::abs(freeVelocity_(2 * i) - row.targetNormalVelocity) / diagonal(2 * i),
                       std::abs(freeVelocity_(2 * i + 1)) / diagonal(2 * i + 1), row.momentum});
   }

@@ -25,10 +25,29 @@ struct LcpSolution {
   std::string failure;
 };
 
+/// How a Lemke path chooses the leaving variable among near-ties of the ratio test.
+enum class RatioTest {
+  Lexicographic,  ///< exact ties broken by B⁻¹'s rows: cannot cycle, may take a tiny pivot
+  Harris          ///< overshoot by harrisTolerance allowed, then the largest pivot wins
+};
+
+/// One path of Lemke's method: the covering vector d > 0 of the artificial variable
+/// (I·w − M·z − d·z0 = q) and the ratio test. Each gives its own path to the same solutions;
+/// where round-off or a tiny pivot defeats one on a degenerate problem, another often succeeds.
+struct LemkePath {
+  Eigen::VectorXd covering;
+  RatioTest ratioTest = RatioTest::Lexicographic;
+};
+
 /// Lemke's method with the covering vector of ones and the lexicographic ratio test (which
 /// cannot cycle on degenerate problems such as a resting stack). It solves every LCP whose M is
 /// positive semi-definite or copositive-plus and that has a solution; O(n³) work in all.
 LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
+                       const LemkeSettings& options);
+
+/// Lemke's method along the given path. Either way the basic values at the end are solved again
+/// from the final basis, kept where that lowers the natural residual.
+LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const LemkePath& path,
                        const LemkeSettings& options);
 
 /// The natural residual ‖min(z, M z + q)‖∞: zero exactly at a solution; it measures violated

@@ -84,7 +84,9 @@ class ReferenceSolver : public ContactSolver {
   ActiveSetAnswer solveByActiveSet(const StepContext& context,
                                    const std::vector<int>& island) const;
   Eigen::SparseMatrix<double> islandDelassus(const std::vector<int>& island) const;
-  double impulseScale(const Eigen::VectorXd& impulses) const;
+  Eigen::VectorXd islandImpulses(const std::vector<int>& island, const Eigen::VectorXd& z) const;
+  double residualOver(const std::vector<int>& points, const Eigen::VectorXd& impulses) const;
+  double impulseScale(const std::vector<int>& points, const Eigen::VectorXd& impulses) const;
   void applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) const;
   void fail(const std::string& reason);
 
