@@ -264,8 +264,8 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
     std::string key(states.size(), '\0');
     for (size_t i = 0; i < states.size(); ++i) key[i] = static_cast<char>(states[i]);
     if (++visits[key] > kVisitsBeforeCycling) {
-      answer.failure = "active set: cycling (the same states for the " +
-                       std::to_string(kVisitsBeforeCycling + 1) + "th time at factorization " +
+      answer.failure = "active set: cycling (the same states solved " +
+                       std::to_string(kVisitsBeforeCycling + 1) + " times by factorization " +
                        std::to_string(answer.factorizations) + ")";
       return answer;
     }

@@ -103,32 +103,26 @@ struct LemkeAttempt {
   std::string name;
 };
 
-/// The attempts in the order they are tried: the lexicographic path, the same on a slightly
-/// perturbed q (the textbook remedy for degeneracy), Harris's ratio test, then both ratio tests
-/// along `coveringRetries` other covering vectors. Each answer is checked against the physical
-/// conditions of the unperturbed problem; the first that passes is used.
-std::vector<LemkeAttempt> lemkeAttempts(int size, int coveringRetries) {
-  std::vector<LemkeAttempt> attempts;
-  const auto add = [&attempts](const Eigen::VectorXd& covering, RatioTest test, bool perturbed,
-                               const std::string& name) {
-    LemkeAttempt attempt;
-    attempt.path.covering = covering;
-    attempt.path.ratioTest = test;
-    attempt.perturbed = perturbed;
-    attempt.name = name;
-    attempts.push_back(attempt);
-  };
-  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(size);
-  add(ones, RatioTest::Lexicographic, false, "");
-  add(ones, RatioTest::Lexicographic, true, "perturbed retry");
-  add(ones, RatioTest::Harris, false, "Harris's ratio test");
-  for (int k = 1; k <= coveringRetries; ++k) {
-    const Eigen::VectorXd covering = retryCovering(size, k);
-    const std::string name = "covering vector " + std::to_string(k);
-    add(covering, RatioTest::Lexicographic, false, name);
-    add(covering, RatioTest::Harris, false, name + " with Harris's test");
+/// Attempt number k (0 ≤ k < 3 + 2·coveringRetries) in the order they are tried: the
+/// lexicographic path, the same on a slightly perturbed q (the textbook remedy for degeneracy),
+/// Harris's ratio test, then both ratio tests along `coveringRetries` other covering vectors.
+/// Each answer is checked against the physical conditions of the unperturbed problem; the first
+/// that passes is used, so the later ones are built only when needed.
+LemkeAttempt lemkeAttempt(int size, int k) {
+  LemkeAttempt attempt;
+  attempt.path.ratioTest =
+      k == 2 || (k > 2 && k % 2 == 0) ? RatioTest::Harris : RatioTest::Lexicographic;
+  attempt.perturbed = k == 1;
+  if (k < 3) {
+    attempt.path.covering = Eigen::VectorXd::Ones(size);
+    attempt.name = k == 0 ? "" : k == 1 ? "perturbed retry" : "Harris's ratio test";
+    return attempt;
   }
-  return attempts;
+  const int vector = (k - 1) / 2;
+  attempt.path.covering = retryCovering(size, vector);
+  attempt.name = "covering vector " + std::to_string(vector) +
+                 (attempt.path.ratioTest == RatioTest::Harris ? " with Harris's test" : "");
+  return attempt;
 }
 
 /// The Jacobian row of a relative velocity along `direction` at `point` on one body:
@@ -339,7 +333,8 @@ LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const 
       size > 0 ? settings_.degeneracyPerturbation * vector.cwiseAbs().maxCoeff() : 0.0;
   std::string failures;
   int pivots = 0;
-  for (const LemkeAttempt& attempt : lemkeAttempts(size, settings_.coveringRetries)) {
+  for (int k = 0; k < 3 + 2 * settings_.coveringRetries; ++k) {
+    const LemkeAttempt attempt = lemkeAttempt(size, k);
     LcpSolution solution = solveLemke(
         matrix, attempt.perturbed ? Eigen::VectorXd(vector + perturbation * growing) : vector,
         attempt.path, settings_.lemke);
@@ -433,8 +428,15 @@ double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
 // relative to their impulse scale.
 double ReferenceSolver::residualOver(const std::vector<int>& points,
                                      const Eigen::VectorXd& impulses) const {
-  const Eigen::VectorXd velocity = freeVelocity_ + delassus_ * impulses;
   const Eigen::VectorXd diagonal = delassus_.diagonal();
+  // v = v₀ + Wλ on the listed rows only (W is symmetric: row r is column r).
+  const auto velocity = [&](int r) {
+    double v = freeVelocity_(r);
+    for (Eigen::SparseMatrix<double>::InnerIterator it(delassus_, r); it; ++it) {
+      v += it.value() * impulses(it.row());
+    }
+    return v;
+  };
   double worst = 0.0;
   for (const int i : points) {
     const PointRow& row = rows_[static_cast<size_t>(i)];
