@@ -1,5 +1,6 @@
 // The worst-first queue of the micro-collision resolver: after any sequence of key changes, the
-// item it names is one with the largest key, as a scan of every key would find.
+// item it names is one with the largest key, as a scan of every key would find, and it is empty
+// exactly when no key is above the threshold.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -16,8 +17,9 @@ TEST_CASE("the worst-first queue names the largest key after every change", "[mi
   std::uniform_int_distribution<int> item(0, 99);
   std::vector<double> keys(100);
   for (double& k : keys) k = key(random);
+  const double threshold = -2.0;  // below every key: every item waits
   WorstFirstQueue queue;
-  queue.reset(keys);
+  queue.reset(keys, threshold);
   CHECK(queue.worstKey() == *std::max_element(keys.begin(), keys.end()));
   int mismatches = 0;
   for (int change = 0; change < 10000; ++change) {
@@ -30,11 +32,43 @@ TEST_CASE("the worst-first queue names the largest key after every change", "[mi
   CHECK(mismatches == 0);
 }
 
+TEST_CASE("only the items above the threshold wait in the worst-first queue", "[micro][queue]") {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> key(-1.0, 1.0);
+  std::uniform_int_distribution<int> item(0, 11);
+  std::vector<double> keys(12);
+  for (double& k : keys) k = key(random);
+  const double threshold = 0.8;  // a tenth of the keys wait; often none
+  WorstFirstQueue queue;
+  queue.reset(keys, threshold);
+  int mismatches = 0;
+  int emptyStates = 0;
+  for (int change = 0; change < 20000; ++change) {
+    const int changed = item(random);
+    keys[changed] = key(random);
+    queue.update(changed, keys[changed]);
+    const double largest = *std::max_element(keys.begin(), keys.end());
+    const int waiting =
+        int(std::count_if(keys.begin(), keys.end(), [&](double k) { return k > threshold; }));
+    if (queue.size() != waiting) ++mismatches;
+    if (largest <= threshold) {
+      if (!queue.empty()) ++mismatches;
+      ++emptyStates;
+    } else if (queue.empty() || queue.worstKey() != largest || keys[queue.worst()] != largest) {
+      ++mismatches;
+    }
+  }
+  CHECK(mismatches == 0);
+  CHECK(emptyStates > 0);  // the sequence did pass through "nothing left to resolve"
+}
+
 TEST_CASE("an empty worst-first queue says so", "[micro][queue]") {
   WorstFirstQueue queue;
-  queue.reset({});
+  queue.reset({}, 0.0);
   CHECK(queue.empty());
-  queue.reset({0.5});
+  queue.reset({0.5}, 0.0);
   CHECK_FALSE(queue.empty());
   CHECK(queue.worst() == 0);
+  queue.update(0, -0.5);
+  CHECK(queue.empty());
 }

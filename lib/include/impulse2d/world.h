@@ -84,6 +84,7 @@ class World : public Simulation {
   void findCandidatePairs(double h);
   void computeSweepBounds(double h);
   void sortSweepOrder();
+  void layOutSweep();
   ManifoldIterator keepSleepingManifolds(ManifoldIterator old, const BodyPair& before);
   bool collidePair(const BodyPair& pair, double h, Manifold& manifold);
   double contactDistance(const Body& a, const Body& b, double h) const;
@@ -108,8 +109,15 @@ class World : public Simulation {
   std::vector<Manifold> solverManifolds_;    ///< the awake ones, when some sleep
   std::vector<int> solvedIndex_;             ///< where each of solverManifolds_ sits in manifolds_
   std::vector<BodyPair> candidatePairs_;
-  std::vector<int> sweepOrder_;
+  /// One body in the sweep: its fattened bounds and whether it is awake.
+  struct SweepEntry {
+    Aabb bounds;
+    int body;
+    bool awake;
+  };
+  std::vector<int> sweepOrder_;       ///< bodies by the left edge of their bounds
   std::vector<Aabb> sweepBounds_;     ///< by body: bounds fattened for speculative contacts
+  std::vector<SweepEntry> sweep_;     ///< in sweep order, so the sweep reads memory in order
   std::vector<int> islandParent_;     ///< union-find forest of the islands, by body
   std::vector<char> islandAwake_;     ///< by island root
   std::vector<double> islandRested_;  ///< s, by island root: the shortest sleep time in it

@@ -38,7 +38,7 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   prepare(context);
   queueKeys_.clear();
   for (const PointState& state : states_) queueKeys_.push_back(severity(context, state));
-  queue_.reset(queueKeys_);
+  queue_.reset(queueKeys_, settings_.velocityEpsilon);
   const int maxIterations = settings_.velocityIterationsPerContact * int(states_.size());
   report_ = SolveReport{};
   while (report_.iterations < maxIterations) {
@@ -197,8 +197,7 @@ double MicroCollisionSolver::severity(const StepContext& context, const PointSta
 }
 
 int MicroCollisionSolver::worstVelocityPoint() const {
-  if (queue_.empty() || queue_.worstKey() <= settings_.velocityEpsilon) return -1;
-  return queue_.worst();
+  return queue_.empty() ? -1 : queue_.worst();
 }
 
 // The total impulse (normal, tangent) at a point after this micro-collision, from the totals
@@ -284,7 +283,7 @@ void MicroCollisionSolver::solvePositions(const StepContext& context) {
     state.penetration = penetrationNow(context, state.manifold, state.point);
     queueKeys_.push_back(state.penetration);
   }
-  queue_.reset(queueKeys_);
+  queue_.reset(queueKeys_, settings_.positionEpsilon);
   const int maxIterations = settings_.positionIterationsPerContact * int(states_.size());
   for (int iteration = 0; iteration < maxIterations; ++iteration) {
     const int worst = worstPenetration();
@@ -294,8 +293,7 @@ void MicroCollisionSolver::solvePositions(const StepContext& context) {
 }
 
 int MicroCollisionSolver::worstPenetration() const {
-  if (queue_.empty() || queue_.worstKey() <= settings_.positionEpsilon) return -1;
-  return queue_.worst();
+  return queue_.empty() ? -1 : queue_.worst();
 }
 
 void MicroCollisionSolver::resolvePenetration(const StepContext& context, int index,

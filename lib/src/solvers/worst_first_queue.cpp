@@ -1,54 +1,80 @@
 // The indexed max-heap behind worst-first resolution.
 #include "impulse2d/solvers/worst_first_queue.h"
 
-#include <utility>
-
 namespace impulse2d {
 
-void WorstFirstQueue::reset(const std::vector<double>& keys) {
-  keys_ = keys;
-  const int count = int(keys_.size());
-  heap_.resize(count);
-  slotOf_.resize(count);
-  for (int i = 0; i < count; ++i) heap_[i] = slotOf_[i] = i;
-  for (int slot = count / 2 - 1; slot >= 0; --slot) siftDown(slot);
+void WorstFirstQueue::reset(const std::vector<double>& keys, double threshold) {
+  threshold_ = threshold;
+  heap_.clear();
+  slotOf_.assign(keys.size(), kOutside);
+  for (int item = 0; item < int(keys.size()); ++item) {
+    if (keys[item] > threshold_) place(int(heap_.size()), {keys[item], item});
+  }
+  for (int slot = int(heap_.size()) / 2 - 1; slot >= 0; --slot) siftDown(slot, heap_[slot]);
 }
 
 void WorstFirstQueue::update(int item, double key) {
-  const double old = keys_[item];
-  keys_[item] = key;
-  if (key > old) {
-    siftUp(slotOf_[item]);
+  const int slot = slotOf_[item];
+  if (slot == kOutside) {
+    if (key > threshold_) push({key, item});
+    return;
+  }
+  if (key <= threshold_) {
+    remove(slot);
+  } else if (key > heap_[slot].key) {
+    siftUp(slot, {key, item});
   } else {
-    siftDown(slotOf_[item]);
+    siftDown(slot, {key, item});
   }
 }
 
-void WorstFirstQueue::swapSlots(int slotA, int slotB) {
-  std::swap(heap_[slotA], heap_[slotB]);
-  slotOf_[heap_[slotA]] = slotA;
-  slotOf_[heap_[slotB]] = slotB;
+// Puts the entry at the slot (which may be one past the end) and records where it is.
+void WorstFirstQueue::place(int slot, const Entry& entry) {
+  if (slot == int(heap_.size())) heap_.push_back(entry);
+  heap_[slot] = entry;
+  slotOf_[entry.item] = slot;
 }
 
-void WorstFirstQueue::siftUp(int slot) {
+// Moves the hole at `slot` up past every parent with a smaller key, then fills it with entry.
+void WorstFirstQueue::siftUp(int slot, Entry entry) {
   while (slot > 0) {
     const int parent = (slot - 1) / 2;
-    if (!above(slot, parent)) return;
-    swapSlots(slot, parent);
+    if (!(entry.key > heap_[parent].key)) break;
+    place(slot, heap_[parent]);
     slot = parent;
   }
+  place(slot, entry);
 }
 
-void WorstFirstQueue::siftDown(int slot) {
+// Moves the hole at `slot` down past every larger child, then fills it with entry.
+void WorstFirstQueue::siftDown(int slot, Entry entry) {
   const int count = int(heap_.size());
   for (;;) {
-    int largest = slot;
-    for (int child : {2 * slot + 1, 2 * slot + 2}) {
-      if (child < count && above(child, largest)) largest = child;
-    }
-    if (largest == slot) return;
-    swapSlots(slot, largest);
-    slot = largest;
+    int child = 2 * slot + 1;
+    if (child >= count) break;
+    if (child + 1 < count && heap_[child + 1].key > heap_[child].key) ++child;
+    if (!(heap_[child].key > entry.key)) break;
+    place(slot, heap_[child]);
+    slot = child;
+  }
+  place(slot, entry);
+}
+
+void WorstFirstQueue::push(const Entry& entry) {
+  heap_.push_back(entry);
+  siftUp(int(heap_.size()) - 1, entry);
+}
+
+// Takes the entry at `slot` out: the last entry fills the hole and moves to its place.
+void WorstFirstQueue::remove(int slot) {
+  slotOf_[heap_[slot].item] = kOutside;
+  const Entry last = heap_.back();
+  heap_.pop_back();
+  if (slot == int(heap_.size())) return;
+  if (slot > 0 && last.key > heap_[(slot - 1) / 2].key) {
+    siftUp(slot, last);
+  } else {
+    siftDown(slot, last);
   }
 }
 
