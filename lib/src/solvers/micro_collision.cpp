@@ -37,7 +37,7 @@ double penetrationNow(const StepContext& context, int manifoldIndex, int point) 
 void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   prepare(context);
   queueKeys_.clear();
-  for (const PointState& state : states_) queueKeys_.push_back(severity(context, state));
+  for (const PointState& state : states_) queueKeys_.push_back(severity(state));
   queue_.reset(queueKeys_, settings_.velocityEpsilon);
   const int maxIterations = settings_.velocityIterationsPerContact * int(states_.size());
   report_ = SolveReport{};
@@ -48,37 +48,84 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
     ++report_.iterations;
   }
   const int remaining = worstVelocityPoint();
-  report_.residual = remaining < 0 ? 0.0 : severity(context, states_[remaining]);
+  report_.residual = remaining < 0 ? 0.0 : severity(states_[remaining]);
   report_.converged = remaining < 0;
+  storeVelocities(context);
 }
 
 void MicroCollisionSolver::prepare(const StepContext& context) {
   dt_ = context.dt;
+  loadSolverBodies(context);
   states_.clear();
   for (int m = 0; m < int(context.manifolds.size()); ++m) {
     Manifold& manifold = context.manifolds[m];
+    context.bodies[manifold.bodyA].wake();  // a contact's impulses wake its bodies
+    context.bodies[manifold.bodyB].wake();
     for (int p = 0; p < manifold.pointCount; ++p) {
       states_.push_back(preparePoint(context, m, p));
     }
   }
-  for (PointState& state : states_) {
-    const Manifold& manifold = context.manifolds[state.manifold];
-    state.contactVelocity =
-        contactVelocity(context.bodies[manifold.bodyA], context.bodies[manifold.bodyB],
-                        manifold.points[state.point].point, manifold.normal);
-  }
+  for (PointState& state : states_) state.contactVelocity = contactVelocityNow(state);
   indexContactsByBody(context);
+}
+
+// The velocity phase works on copies of what its impulses touch, one per body (static bodies
+// have zero inverse mass and inertia); positions do not move until the penetration phase.
+void MicroCollisionSolver::loadSolverBodies(const StepContext& context) {
+  solverBodies_.resize(context.bodies.size());
+  for (size_t i = 0; i < context.bodies.size(); ++i) {
+    const Body& body = context.bodies[i];
+    solverBodies_[i] = {body.velocity, body.angularVelocity, body.inverseMass, body.inverseInertia};
+  }
+}
+
+void MicroCollisionSolver::storeVelocities(const StepContext& context) const {
+  for (size_t i = 0; i < context.bodies.size(); ++i) storeVelocity(context, int(i));
+}
+
+void MicroCollisionSolver::storeVelocity(const StepContext& context, int body) const {
+  Body& target = context.bodies[body];
+  if (target.isStatic()) return;
+  target.velocity = solverBodies_[body].velocity;
+  target.angularVelocity = solverBodies_[body].angularVelocity;
+}
+
+// The (normal, tangent) relative velocity at the point, B's material minus A's.
+Vec2 MicroCollisionSolver::contactVelocityNow(const PointState& state) const {
+  const SolverBody& a = solverBodies_[state.bodyA];
+  const SolverBody& b = solverBodies_[state.bodyB];
+  const Vec2 relative = b.velocity + cross(b.angularVelocity, state.armB) - a.velocity -
+                        cross(a.angularVelocity, state.armA);
+  return Vec2(relative.dot(state.normal), relative.dot(leftPerpendicular(state.normal)));
+}
+
+// The (normal, tangent) impulse at the point: +P to B, −P to A.
+void MicroCollisionSolver::applyImpulse(const PointState& state, const Vec2& impulse) {
+  const Vec2 P =
+      normalPart(impulse) * state.normal + tangentPart(impulse) * leftPerpendicular(state.normal);
+  SolverBody& a = solverBodies_[state.bodyA];
+  SolverBody& b = solverBodies_[state.bodyB];
+  a.velocity -= a.inverseMass * P;
+  a.angularVelocity -= a.inverseInertia * cross(state.armA, P);
+  b.velocity += b.inverseMass * P;
+  b.angularVelocity += b.inverseInertia * cross(state.armB, P);
 }
 
 // One point's state before the solve; with warm starting, its last totals are applied at once.
 MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepContext& context,
                                                                     int manifoldIndex,
-                                                                    int pointIndex) const {
+                                                                    int pointIndex) {
   Manifold& manifold = context.manifolds[manifoldIndex];
   ContactPoint& point = manifold.points[pointIndex];
   PointState state;
   state.manifold = manifoldIndex;
   state.point = pointIndex;
+  state.bodyA = manifold.bodyA;
+  state.bodyB = manifold.bodyB;
+  state.normal = manifold.normal;
+  state.armA = point.point - context.bodies[manifold.bodyA].position;
+  state.armB = point.point - context.bodies[manifold.bodyB].position;
+  state.restitution = manifold.restitution;
   state.contactMatrix = contactMatrix(context.bodies[manifold.bodyA],
                                       context.bodies[manifold.bodyB], point.point, manifold.normal);
   state.inverseContactMatrix =
@@ -90,10 +137,7 @@ MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepCo
   point.tangentImpulse = tangentPart(state.totalImpulse);
   point.friction = FrictionState::None;
   point.bounced = false;
-  if (normalPart(state.totalImpulse) > 0.0) {
-    applyContactImpulse(context.bodies, manifold, pointIndex, normalPart(state.totalImpulse),
-                        tangentPart(state.totalImpulse));
-  }
+  if (normalPart(state.totalImpulse) > 0.0) applyImpulse(state, state.totalImpulse);
   return state;
 }
 
@@ -130,12 +174,12 @@ void MicroCollisionSolver::indexContactsByBody(const StepContext& context) {
 }
 
 // Lowering the restitution: a contact closing slower than the velocity limit does not bounce.
-double MicroCollisionSolver::appliedRestitution(const Manifold& manifold,
+double MicroCollisionSolver::appliedRestitution(const PointState& state,
                                                 double closingSpeed) const {
   if (settings_.lowerRestitutionAtLowSpeed && closingSpeed < settings_.restitutionVelocityLimit) {
     return 0.0;
   }
-  return manifold.restitution;
+  return state.restitution;
 }
 
 // Removing accelerative velocity: vacc, the separating velocity the last update's accelerations
@@ -153,11 +197,10 @@ double MicroCollisionSolver::accelerationVelocity(const StepContext& context,
 // changes the bounce, so a collision passes along a row of touching bodies. Without a bounce
 // (or once it has had it), a contact with a speculative gap may close it within the step, and no
 // more; a touching one should stop closing.
-double MicroCollisionSolver::targetNormalVelocity(const PointState& state,
-                                                  const Manifold& manifold) const {
+double MicroCollisionSolver::targetNormalVelocity(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
   if (!state.bounced) {
-    const double restitution = appliedRestitution(manifold, -separatingVelocity);
+    const double restitution = appliedRestitution(state, -separatingVelocity);
     const double bounce = -restitution * (separatingVelocity - state.accelerationVelocity);
     if (bounce > 0.0) return bounce;
   }
@@ -170,13 +213,12 @@ double MicroCollisionSolver::targetNormalVelocity(const PointState& state,
 // update already pushes it. Along the tangent, all the slip. A point that has bounced is
 // afterwards only kept from closing, so a later impulse at a neighbour does not bounce it again,
 // nor take its bounce back.
-Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state,
-                                                 const Manifold& manifold) const {
+Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
   const bool gapCloses = settings_.speculativeGaps && separatingVelocity * dt_ < state.penetration;
   const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
   double normalChange = state.penetration >= 0.0 || gapCloses || pressed
-                            ? targetNormalVelocity(state, manifold) - separatingVelocity
+                            ? targetNormalVelocity(state) - separatingVelocity
                             : 0.0;
   if (state.bounced) normalChange = std::max(0.0, normalChange);
   return Vec2(normalChange, -tangentPart(state.contactVelocity));
@@ -186,8 +228,8 @@ Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state,
 // normal need, as in the lecture; a point this update already pushes also counts being pushed
 // too hard and, while its friction is static, the slip left by impulses at its neighbours — so
 // the impulses of one update converge to resting contact instead of leaving a box rocking.
-double MicroCollisionSolver::severity(const StepContext& context, const PointState& state) const {
-  const Vec2 desired = desiredVelocityChange(state, context.manifolds[state.manifold]);
+double MicroCollisionSolver::severity(const PointState& state) const {
+  const Vec2 desired = desiredVelocityChange(state);
   if (!settings_.severityCountsPushedPoints || normalPart(state.totalImpulse) <= 0.0) {
     return normalPart(desired);
   }
@@ -244,8 +286,8 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   PointState& state = states_[index];
   Manifold& manifold = context.manifolds[state.manifold];
   ContactPoint& point = manifold.points[state.point];
-  const Vec2 desired = desiredVelocityChange(state, manifold);
-  const bool bounces = !state.bounced && targetNormalVelocity(state, manifold) > 0.0;
+  const Vec2 desired = desiredVelocityChange(state);
+  const bool bounces = !state.bounced && targetNormalVelocity(state) > 0.0;
   const Vec2 before = settings_.impulseTotals ? state.totalImpulse : Vec2::Zero();
   const Vec2 impulse =
       newTotalImpulse(state, before, manifold.friction, desired, state.friction) - before;
@@ -255,10 +297,13 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   point.normalImpulse = normalPart(state.totalImpulse);
   point.tangentImpulse = tangentPart(state.totalImpulse);
   point.friction = state.friction;
-  applyContactImpulse(context.bodies, manifold, state.point, normalPart(impulse),
-                      tangentPart(impulse));
-  refreshContactVelocities(context, manifold.bodyA);
-  refreshContactVelocities(context, manifold.bodyB);
+  applyImpulse(state, impulse);
+  refreshContactVelocities(context, state.bodyA);
+  refreshContactVelocities(context, state.bodyB);
+  if (context.observer) {  // a traced step shows the bodies as this impulse left them
+    storeVelocity(context, state.bodyA);
+    storeVelocity(context, state.bodyB);
+  }
   context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point,
                   normalPart(desired), normalPart(impulse), tangentPart(impulse)});
 }
@@ -267,11 +312,8 @@ void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, 
   if (context.bodies[bodyIndex].isStatic()) return;
   for (int i = contactsOfBodyStart_[bodyIndex]; i < contactsOfBodyStart_[bodyIndex + 1]; ++i) {
     PointState& state = states_[contactsOfBody_[i]];
-    const Manifold& manifold = context.manifolds[state.manifold];
-    state.contactVelocity =
-        contactVelocity(context.bodies[manifold.bodyA], context.bodies[manifold.bodyB],
-                        manifold.points[state.point].point, manifold.normal);
-    queue_.update(contactsOfBody_[i], severity(context, state));
+    state.contactVelocity = contactVelocityNow(state);
+    queue_.update(contactsOfBody_[i], severity(state));
   }
 }
 

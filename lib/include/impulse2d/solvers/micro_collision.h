@@ -23,9 +23,23 @@ class MicroCollisionSolver : public ContactSolver {
 
  private:
   /// What resolution needs to know of one contact point between impulses or moves.
+  /// What an impulse changes of one body: its velocities, kept apart from the bodies during the
+  /// velocity phase so the hot loop reads little memory.
+  struct SolverBody {
+    Vec2 velocity = Vec2::Zero();
+    double angularVelocity = 0.0;
+    double inverseMass = 0.0;
+    double inverseInertia = 0.0;
+  };
   struct PointState {
     int manifold = 0;
     int point = 0;
+    int bodyA = 0;
+    int bodyB = 0;
+    Vec2 normal = Vec2::Zero();  ///< from A to B
+    Vec2 armA = Vec2::Zero();    ///< contact point minus A's centre (fixed in the velocity phase)
+    Vec2 armB = Vec2::Zero();    ///< contact point minus B's centre
+    double restitution = 0.0;    ///< the manifold's mixed coefficient
     Mat2 contactMatrix = Mat2::Zero();         ///< unit impulse -> velocity change
     Mat2 inverseContactMatrix = Mat2::Zero();  ///< velocity change -> impulse
     Vec2 contactVelocity = Vec2::Zero();       ///< (normal, tangent) relative velocity now
@@ -37,14 +51,19 @@ class MicroCollisionSolver : public ContactSolver {
   };
 
   void prepare(const StepContext& context);
-  PointState preparePoint(const StepContext& context, int manifoldIndex, int pointIndex) const;
+  void loadSolverBodies(const StepContext& context);
+  void storeVelocities(const StepContext& context) const;
+  void storeVelocity(const StepContext& context, int body) const;
+  Vec2 contactVelocityNow(const PointState& state) const;
+  void applyImpulse(const PointState& state, const Vec2& impulse);
+  PointState preparePoint(const StepContext& context, int manifoldIndex, int pointIndex);
   Vec2 warmStartTotals(const Manifold& manifold, const ContactPoint& point) const;
   void indexContactsByBody(const StepContext& context);
-  double appliedRestitution(const Manifold& manifold, double closingSpeed) const;
+  double appliedRestitution(const PointState& state, double closingSpeed) const;
   double accelerationVelocity(const StepContext& context, const Manifold& manifold) const;
-  double targetNormalVelocity(const PointState& state, const Manifold& manifold) const;
-  Vec2 desiredVelocityChange(const PointState& state, const Manifold& manifold) const;
-  double severity(const StepContext& context, const PointState& state) const;
+  double targetNormalVelocity(const PointState& state) const;
+  Vec2 desiredVelocityChange(const PointState& state) const;
+  double severity(const PointState& state) const;
   int worstVelocityPoint() const;
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
                        const Vec2& desiredChange, FrictionState& frictionState) const;
@@ -58,6 +77,7 @@ class MicroCollisionSolver : public ContactSolver {
   void refreshPenetrations(const StepContext& context, int bodyIndex);
 
   MicroCollisionSettings settings_;
+  std::vector<SolverBody> solverBodies_;  ///< by body, during the velocity phase
   std::vector<PointState> states_;
   std::vector<int>
       contactsOfBodyStart_;  ///< states_ of body i: contactsOfBody_[start[i], start[i+1])
