@@ -24,13 +24,6 @@ double tangentPart(const Vec2& pair) {
   return pair.y();
 }
 
-/// The penetration of a manifold's point as the bodies stand now.
-double penetrationNow(const StepContext& context, int manifoldIndex, int point) {
-  const Manifold& manifold = context.manifolds[manifoldIndex];
-  return currentPenetration(context.bodies[manifold.bodyA], context.bodies[manifold.bodyB],
-                            manifold, point);
-}
-
 }  // namespace
 // ---- velocity resolution ----
 
@@ -126,6 +119,8 @@ MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepCo
   state.armA = point.point - context.bodies[manifold.bodyA].position;
   state.armB = point.point - context.bodies[manifold.bodyB].position;
   state.restitution = manifold.restitution;
+  state.anchorA = point.anchorA;
+  state.anchorB = point.anchorB;
   state.contactMatrix = contactMatrix(context.bodies[manifold.bodyA],
                                       context.bodies[manifold.bodyB], point.point, manifold.normal);
   state.inverseContactMatrix =
@@ -320,9 +315,10 @@ void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, 
 // ---- penetration resolution ----
 
 void MicroCollisionSolver::solvePositions(const StepContext& context) {
+  loadPoses(context);
   queueKeys_.clear();
   for (PointState& state : states_) {
-    state.penetration = penetrationNow(context, state.manifold, state.point);
+    state.penetration = penetrationNow(state);
     queueKeys_.push_back(state.penetration);
   }
   queue_.reset(queueKeys_, settings_.positionEpsilon);
@@ -332,6 +328,38 @@ void MicroCollisionSolver::solvePositions(const StepContext& context) {
     if (worst < 0) break;
     resolvePenetration(context, worst, iteration);
   }
+  storePoses(context);
+}
+
+// The penetration phase moves copies of the bodies' poses, with the rotation kept as cosine and
+// sine; the bodies get them (and their caches) once, at the end.
+void MicroCollisionSolver::loadPoses(const StepContext& context) {
+  poses_.resize(context.bodies.size());
+  for (size_t i = 0; i < context.bodies.size(); ++i) {
+    const Body& body = context.bodies[i];
+    poses_[i] = {body.position,    body.angle,          body.rotation(0, 0), body.rotation(1, 0),
+                 body.inverseMass, body.inverseInertia, !body.isStatic(),    false};
+  }
+}
+
+void MicroCollisionSolver::storePoses(const StepContext& context) {
+  for (size_t i = 0; i < context.bodies.size(); ++i) storePose(context, int(i));
+}
+
+void MicroCollisionSolver::storePose(const StepContext& context, int body) {
+  Pose& pose = poses_[body];
+  if (!pose.moved) return;
+  Body& target = context.bodies[body];
+  target.position = pose.position;
+  target.angle = pose.angle;
+  target.updateCache();
+  pose.moved = false;
+}
+
+// A point's penetration at the poses now: the anchor on A minus the anchor on B, along the normal.
+double MicroCollisionSolver::penetrationNow(const PointState& state) const {
+  return (poses_[state.bodyA].toWorld(state.anchorA) - poses_[state.bodyB].toWorld(state.anchorB))
+      .dot(state.normal);
 }
 
 int MicroCollisionSolver::worstPenetration() const {
@@ -341,18 +369,24 @@ int MicroCollisionSolver::worstPenetration() const {
 void MicroCollisionSolver::resolvePenetration(const StepContext& context, int index,
                                               int iteration) {
   const PointState& state = states_[index];
-  const Manifold& manifold = context.manifolds[state.manifold];
-  Body& a = context.bodies[manifold.bodyA];
-  Body& b = context.bodies[manifold.bodyB];
-  const Vec2 point = currentContactPoint(a, b, manifold.points[state.point]);
+  Pose& a = poses_[state.bodyA];
+  Pose& b = poses_[state.bodyB];
+  const Vec2 point = 0.5 * (a.toWorld(state.anchorA) + b.toWorld(state.anchorB));
   const Vec2 armA = point - a.position;
   const Vec2 armB = point - b.position;
-  const Mat2 inertiaAtContact = contactMatrix(a, b, point, manifold.normal);
+  const double torqueArmA = cross(armA, state.normal);
+  const double torqueArmB = cross(armB, state.normal);
+  const double inertiaAtContact = a.inverseMass + a.inverseInertia * torqueArmA * torqueArmA +
+                                  b.inverseMass + b.inverseInertia * torqueArmB * torqueArmB;
   const double penetration = state.penetration;
-  moveBody(a, armA, -manifold.normal, penetration, inertiaAtContact(0, 0));
-  moveBody(b, armB, manifold.normal, penetration, inertiaAtContact(0, 0));
-  refreshPenetrations(context, manifold.bodyA);
-  refreshPenetrations(context, manifold.bodyB);
+  moveBody(a, armA, -state.normal, penetration, inertiaAtContact);
+  moveBody(b, armB, state.normal, penetration, inertiaAtContact);
+  refreshPenetrations(state.bodyA);
+  refreshPenetrations(state.bodyB);
+  if (context.observer) {  // a traced step shows the bodies as this move left them
+    storePose(context, state.bodyA);
+    storePose(context, state.bodyB);
+  }
   context.report({SolverEvent::Phase::Position, iteration, state.manifold, state.point, penetration,
                   0.0, 0.0});
 }
@@ -361,9 +395,9 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
 // proportion to its inverse mass and its angular inertia at the contact, the angular share
 // limited to angularMoveLimit·|arm| (large turns of small bodies look wrong) with the rest moved
 // linearly.
-void MicroCollisionSolver::moveBody(Body& body, const Vec2& arm, const Vec2& direction,
+void MicroCollisionSolver::moveBody(Pose& body, const Vec2& arm, const Vec2& direction,
                                     double penetration, double totalInertia) const {
-  if (body.isStatic() || totalInertia <= 0.0) return;
+  if (!body.movable || totalInertia <= 0.0) return;
   const double torqueArm = cross(arm, direction);
   const double angularInertia = body.inverseInertia * torqueArm * torqueArm;
   double linearMove = penetration * body.inverseMass / totalInertia;
@@ -377,15 +411,17 @@ void MicroCollisionSolver::moveBody(Body& body, const Vec2& arm, const Vec2& dir
   body.position += linearMove * direction;
   if (angularInertia > 0.0) {
     body.angle += body.inverseInertia * torqueArm * angularMove / angularInertia;
+    body.cosine = std::cos(body.angle);
+    body.sine = std::sin(body.angle);
   }
-  body.updateCache();
+  body.moved = true;
 }
 
-void MicroCollisionSolver::refreshPenetrations(const StepContext& context, int bodyIndex) {
-  if (context.bodies[bodyIndex].isStatic()) return;
+void MicroCollisionSolver::refreshPenetrations(int bodyIndex) {
+  if (!poses_[bodyIndex].movable) return;
   for (int i = contactsOfBodyStart_[bodyIndex]; i < contactsOfBodyStart_[bodyIndex + 1]; ++i) {
     PointState& state = states_[contactsOfBody_[i]];
-    state.penetration = penetrationNow(context, state.manifold, state.point);
+    state.penetration = penetrationNow(state);
     queue_.update(contactsOfBody_[i], state.penetration);
   }
 }

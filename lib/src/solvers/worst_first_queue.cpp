@@ -1,6 +1,8 @@
 // The indexed max-heap behind worst-first resolution.
 #include "impulse2d/solvers/worst_first_queue.h"
 
+#include <algorithm>
+
 namespace impulse2d {
 
 void WorstFirstQueue::reset(const std::vector<double>& keys, double threshold) {
@@ -38,7 +40,7 @@ void WorstFirstQueue::place(int slot, const Entry& entry) {
 // Moves the hole at `slot` up past every parent with a smaller key, then fills it with entry.
 void WorstFirstQueue::siftUp(int slot, Entry entry) {
   while (slot > 0) {
-    const int parent = (slot - 1) / 2;
+    const int parent = (slot - 1) / kArity;
     if (!(entry.key > heap_[parent].key)) break;
     place(slot, heap_[parent]);
     slot = parent;
@@ -50,9 +52,12 @@ void WorstFirstQueue::siftUp(int slot, Entry entry) {
 void WorstFirstQueue::siftDown(int slot, Entry entry) {
   const int count = int(heap_.size());
   for (;;) {
-    int child = 2 * slot + 1;
-    if (child >= count) break;
-    if (child + 1 < count && heap_[child + 1].key > heap_[child].key) ++child;
+    const int first = kArity * slot + 1;
+    if (first >= count) break;
+    int child = first;
+    for (int other = first + 1; other < std::min(first + kArity, count); ++other) {
+      if (heap_[other].key > heap_[child].key) child = other;
+    }
     if (!(heap_[child].key > entry.key)) break;
     place(slot, heap_[child]);
     slot = child;
@@ -71,7 +76,7 @@ void WorstFirstQueue::remove(int slot) {
   const Entry last = heap_.back();
   heap_.pop_back();
   if (slot == int(heap_.size())) return;
-  if (slot > 0 && last.key > heap_[(slot - 1) / 2].key) {
+  if (slot > 0 && last.key > heap_[(slot - 1) / kArity].key) {
     siftUp(slot, last);
   } else {
     siftDown(slot, last);

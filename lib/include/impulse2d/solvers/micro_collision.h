@@ -31,23 +31,43 @@ class MicroCollisionSolver : public ContactSolver {
     double inverseMass = 0.0;
     double inverseInertia = 0.0;
   };
+  /// What a penetration move changes of one body: its pose, the rotation as cosine and sine.
+  struct Pose {
+    Vec2 position = Vec2::Zero();
+    double angle = 0.0;
+    double cosine = 1.0;
+    double sine = 0.0;
+    double inverseMass = 0.0;
+    double inverseInertia = 0.0;
+    bool movable = false;  ///< not static
+    bool moved = false;    ///< since the body last got its pose
+    Vec2 toWorld(const Vec2& local) const {
+      return position +
+             Vec2(cosine * local.x() - sine * local.y(), sine * local.x() + cosine * local.y());
+    }
+  };
   struct PointState {
-    int manifold = 0;
-    int point = 0;
+    // What the penetration phase reads, together ...
     int bodyA = 0;
     int bodyB = 0;
-    Vec2 normal = Vec2::Zero();  ///< from A to B
-    Vec2 armA = Vec2::Zero();    ///< contact point minus A's centre (fixed in the velocity phase)
-    Vec2 armB = Vec2::Zero();    ///< contact point minus B's centre
-    double restitution = 0.0;    ///< the manifold's mixed coefficient
+    Vec2 normal = Vec2::Zero();   ///< from A to B
+    Vec2 anchorA = Vec2::Zero();  ///< the point on A's surface, in A's frame
+    Vec2 anchorB = Vec2::Zero();  ///< the point on B's surface, in B's frame
+    double penetration = 0.0;     ///< m, kept current while bodies move
+    // ... then what the velocity phase adds ...
+    Vec2 armA = Vec2::Zero();             ///< contact point minus A's centre (fixed while solving)
+    Vec2 armB = Vec2::Zero();             ///< contact point minus B's centre
+    Vec2 contactVelocity = Vec2::Zero();  ///< (normal, tangent) relative velocity now
+    Vec2 totalImpulse = Vec2::Zero();     ///< (normal, tangent) applied here in this update
+    double accelerationVelocity = 0.0;    ///< vacc: the last update's acceleration along n, m/s
+    double restitution = 0.0;             ///< the manifold's mixed coefficient
+    bool bounced = false;                 ///< had its bounce this step (targetNormalVelocity)
+    FrictionState friction = FrictionState::None;
+    // ... and what only an impulse needs.
+    int manifold = 0;
+    int point = 0;
     Mat2 contactMatrix = Mat2::Zero();         ///< unit impulse -> velocity change
     Mat2 inverseContactMatrix = Mat2::Zero();  ///< velocity change -> impulse
-    Vec2 contactVelocity = Vec2::Zero();       ///< (normal, tangent) relative velocity now
-    double accelerationVelocity = 0.0;  ///< vacc: the last update's acceleration along n, m/s
-    bool bounced = false;               ///< had its bounce this step (targetNormalVelocity)
-    double penetration = 0.0;           ///< m, kept current while bodies move
-    Vec2 totalImpulse = Vec2::Zero();   ///< (normal, tangent) applied here in this update
-    FrictionState friction = FrictionState::None;
   };
 
   void prepare(const StepContext& context);
@@ -72,12 +92,17 @@ class MicroCollisionSolver : public ContactSolver {
 
   int worstPenetration() const;
   void resolvePenetration(const StepContext& context, int index, int iteration);
-  void moveBody(Body& body, const Vec2& arm, const Vec2& direction, double penetration,
+  void loadPoses(const StepContext& context);
+  void storePoses(const StepContext& context);
+  void storePose(const StepContext& context, int body);
+  double penetrationNow(const PointState& state) const;
+  void moveBody(Pose& body, const Vec2& arm, const Vec2& direction, double penetration,
                 double totalInertia) const;
-  void refreshPenetrations(const StepContext& context, int bodyIndex);
+  void refreshPenetrations(int bodyIndex);
 
   MicroCollisionSettings settings_;
   std::vector<SolverBody> solverBodies_;  ///< by body, during the velocity phase
+  std::vector<Pose> poses_;               ///< by body, during the penetration phase
   std::vector<PointState> states_;
   std::vector<int>
       contactsOfBodyStart_;  ///< states_ of body i: contactsOfBody_[start[i], start[i+1])

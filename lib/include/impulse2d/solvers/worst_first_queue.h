@@ -28,6 +28,9 @@ class WorstFirstQueue {
     int item;
   };
   static constexpr int kOutside = -1;  ///< slotOf_ of an item not waiting
+  /// Children per node: a 4-ary heap is half as deep as a binary one, and a node's four children
+  /// share a cache line or two.
+  static constexpr int kArity = 4;
 
   void place(int slot, const Entry& entry);
   void siftUp(int slot, Entry entry);
