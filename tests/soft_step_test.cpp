@@ -280,7 +280,7 @@ TEST_CASE("load-scaled stiffness: without the leak one sweep per substep rattles
           "[soft_step][stack][load_scaled][stability]") {
   // The impulse scale that lets a loaded spring sag also damps the one Gauss-Seidel sweep a
   // substep gives each contact. Scaled by the load it nearly vanishes (a 10-box stack's bottom
-  // points carry load ratios of 12 to 25), and with 4 substeps the column rattles
+  // points carry load ratios of 12.5 and 22.5), and with 4 substeps the column rattles
   // (docs/soft-step.md).
   Scene scene = stackScene("soft_step", 10, 0.6);
   const auto fastestTop = [&](bool loadScaled) {
