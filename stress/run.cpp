@@ -47,6 +47,9 @@ std::vector<Method> extraMethods() {
       {"soft step, 16 substeps at 240 Hz",
        "soft_step",
        {"solver.substeps=16", "solver.contact_hertz=240"}},
+      // Springs per carried mass: little sag, but one sweep per substep loses the softness that
+      // kept it steady under a mass ratio (docs/soft-step.md).
+      {"soft step + load-scaled stiffness", "soft_step", {"solver.load_scaled_stiffness=true"}},
       {"micro − both bounce fixes",
        "micro",
        {"solver.remove_acceleration_velocity=false", "solver.lower_restitution_at_low_speed=false",

@@ -376,7 +376,7 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     probeOf<DisplacementProbe>(kSkinStep),
                     {},
                     {},
-                    {"soft step, 16 substeps at 240 Hz"}});
+                    {"soft step, 16 substeps at 240 Hz", "soft step + load-scaled stiffness"}});
   scenes.push_back({"circle_stack",
                     "Tall stack of circles",
                     {"balls", "", 2, 40, KnobScale::Integer},
@@ -404,7 +404,8 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     probeOf<PenetrationProbe>(kSettledStep),
                     {},
                     {},
-                    {"sequential + 4 substeps", "soft step, 16 substeps at 240 Hz"}});
+                    {"sequential + 4 substeps", "soft step, 16 substeps at 240 Hz",
+                     "soft step + load-scaled stiffness"}});
   scenes.push_back({"heavy_pyramid",
                     "Pyramid topped by a heavy box",
                     ratio,

@@ -109,6 +109,8 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"damping_ratio", &s.dampingRatio},
           {"static_hertz_factor", &s.staticHertzFactor},
           {"max_push_velocity", &s.maxPushVelocity},
+          {"load_scaled_stiffness", &s.loadScaledStiffness},
+          {"load_acceleration", &s.loadAcceleration},
           {"soft_contacts", &s.softContacts},
           {"relax", &s.relax},
           {"warm_starting", &s.warmStarting},

@@ -266,6 +266,18 @@ struct SoftStepSettings {
   /// m/s. Largest speed at which the bias pushes overlapping bodies apart (Box2D v3's
   /// contactPushMaxVelocity, 3).
   double maxPushVelocity = 3.0;
+  /// A contact point is a spring per unit of its effective mass, so at rest it sinks its load
+  /// over m_eff·ω²: deep under a heavy body or a tall column. On, a point whose last load F
+  /// exceeds m_eff·loadAcceleration gets the spring of the mass it carries, F/loadAcceleration,
+  /// at the same hertz and damping (stiffness and damping both times the load ratio), so at rest
+  /// it sinks only loadAcceleration/ω². Off by default: the impulse scale it shrinks is also what
+  /// keeps one sweep per substep steady under a mass ratio, and with 4 substeps a heavy box on
+  /// a light one rocks (docs/soft-step.md). Off: Box2D v3's spring.
+  bool loadScaledStiffness = false;
+  /// m/s². The acceleration that turns a point's load into the mass it carries (10: under a
+  /// gravity of about 10 a point sinks g/ω², as a body resting alone does). Not the world's
+  /// gravity, so a contact pressed by a force in zero gravity stiffens the same way.
+  double loadAcceleration = 10.0;
   /// Soft constraints: bias rate, mass scale and impulse scale from hertz and damping ratio. Off:
   /// the rigid limit (infinite hertz): bias rate 1/h, mass scale 1, impulse scale 0, so each
   /// substep tries to remove the whole overlap.

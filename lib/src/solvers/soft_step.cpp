@@ -47,6 +47,11 @@ Softness rigidSoftness(double h) {
   return {1.0 / h, 1.0, 0.0};
 }
 
+Softness loadedSoftness(double hertz, double dampingRatio, double h, double loadRatio) {
+  const double scale = std::sqrt(loadRatio);
+  return makeSoftness(scale * hertz, scale * dampingRatio, h);
+}
+
 void SoftStepSolver::solveVelocities(const StepContext& context) {
   const double h = context.dt / settings_.substeps;
   inverseSubstep_ = 1.0 / h;
@@ -90,12 +95,6 @@ void SoftStepSolver::prepareBodies(const StepContext& context, double h) {
 void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
   const double hertz =
       std::min(settings_.contactHertz, settings_.maxHertzPerSubstepRate * inverseSubstep_);
-  const Softness contact =
-      settings_.softContacts ? makeSoftness(hertz, settings_.dampingRatio, h) : rigidSoftness(h);
-  const Softness againstStatic =
-      settings_.softContacts
-          ? makeSoftness(settings_.staticHertzFactor * hertz, settings_.dampingRatio, h)
-          : rigidSoftness(h);
   const double warm = settings_.warmStarting ? 1.0 / settings_.substeps : 0.0;
   constraints_.resize(context.manifolds.size());
   for (size_t m = 0; m < context.manifolds.size(); ++m) {
@@ -111,7 +110,8 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     constraint.pointCount = manifold.pointCount;
     const Body& bodyA = context.bodies[size_t(manifold.bodyA)];
     const Body& bodyB = context.bodies[size_t(manifold.bodyB)];
-    constraint.softness = bodyA.isAwake() && bodyB.isAwake() ? contact : againstStatic;
+    const double pairHertz =
+        bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
     const SolverBody& a = bodies_[size_t(manifold.bodyA)];
     const SolverBody& b = bodies_[size_t(manifold.bodyB)];
     const Vec2 normal = manifold.normal;
@@ -132,11 +132,26 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
       const double kTangent = inverseMass(tangent);
       cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
       cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
+      cp.softness = pointSoftness(pairHertz, h, point, cp.normalMass);
       cp.normalImpulse = warm * point.normalImpulse;
       cp.tangentImpulse = warm * point.tangentImpulse;
       cp.relativeVelocity = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(normal);
     }
   }
+}
+
+// The spring of a point (the rigid limit without soft contacts). With loadScaledStiffness, a
+// point that carried more than its effective mass at loadAcceleration last step gets the spring
+// of the mass it carried: the manifold keeps the step's impulse, so its load is that over dt.
+Softness SoftStepSolver::pointSoftness(double hertz, double h, const ContactPoint& point,
+                                       double normalMass) const {
+  if (!settings_.softContacts) return rigidSoftness(h);
+  double loadRatio = 1.0;
+  if (settings_.loadScaledStiffness && normalMass > 0.0) {
+    const double load = point.normalImpulse / (h * settings_.substeps);
+    loadRatio = std::max(1.0, load / (normalMass * settings_.loadAcceleration));
+  }
+  return loadedSoftness(hertz, settings_.dampingRatio, h, loadRatio);
 }
 
 void SoftStepSolver::integrateVelocities() {
@@ -198,9 +213,9 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverB
                                   bool useBias) {
   const Vec2 normal = constraint.normal;
   const Vec2 moved = b.deltaPosition - a.deltaPosition;
-  const Softness& soft = constraint.softness;
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[size_t(i)];
+    const Softness& soft = cp.softness;
     const Vec2 anchorsMoved =
         moved + rotate(b.deltaCos, b.deltaSin, cp.armB) - rotate(a.deltaCos, a.deltaSin, cp.armA);
     const double separation = cp.baseSeparation + anchorsMoved.dot(normal);

@@ -29,6 +29,11 @@ struct Softness {
 Softness makeSoftness(double hertz, double dampingRatio, double h);
 /// The limit of infinite stiffness: the whole overlap is asked back in one substep.
 Softness rigidSoftness(double h);
+/// The spring of `hertz` and `dampingRatio` per unit of a mass `loadRatio` times the effective
+/// mass: stiffness and damping both loadRatio times larger, i.e. ω and ζ times √loadRatio. The
+/// bias rate ω/(2ζ + hω) stays; the mass scale rises and the impulse scale, the leak that lets a
+/// loaded spring sag, falls, so at rest the point sinks its load over loadRatio·m_eff·ω².
+Softness loadedSoftness(double hertz, double dampingRatio, double h, double loadRatio);
 
 class SoftStepSolver : public ContactSolver {
  public:
@@ -73,6 +78,7 @@ class SoftStepSolver : public ContactSolver {
     double tangentImpulse = 0.0;
     double totalNormalImpulse = 0.0;  ///< all normal impulse applied this step: did it touch?
     double relativeVelocity = 0.0;    ///< vn before the step, for restitution
+    Softness softness;                ///< this point's spring, sized by the load it carried
   };
   struct Constraint {
     int manifold = 0;
@@ -81,13 +87,14 @@ class SoftStepSolver : public ContactSolver {
     Vec2 normal = Vec2::Zero();
     double friction = 0.0;
     double restitution = 0.0;
-    Softness softness;
     int pointCount = 0;
     std::array<ConstraintPoint, 2> points;
   };
 
   void prepareBodies(const StepContext& context, double h);
   void prepareConstraints(const StepContext& context, double h);
+  Softness pointSoftness(double hertz, double h, const ContactPoint& point,
+                         double normalMass) const;
   void integrateVelocities();
   void warmStart();
   double solve(const StepContext& context, bool useBias, int substep);
