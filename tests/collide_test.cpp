@@ -298,6 +298,34 @@ TEST_CASE("feature ids stay the same while a resting box is nudged", "[contact][
   }
 }
 
+TEST_CASE("a point keeps its feature id when the reference face passes to the other box",
+          "[contact][feature-id]") {
+  // An equal box on a box, both tilted by a few milliradians the opposite way: as the tilts
+  // swap, the face with the least overlap passes from the lower box (A) to the upper one (B).
+  // The left point and the right point must keep their ids throughout, or warm starting loses
+  // their impulses every time the reference flips.
+  int flips = 0;
+  std::vector<FeatureId> leftIds;
+  std::vector<FeatureId> rightIds;
+  for (int pose = -10; pose <= 10; ++pose) {
+    const double tilt = 0.001 * pose;  // rad
+    const Body lower = box(1.0, 1.0, Vec2(0.0, 0.5), tilt);
+    const Body upper = box(1.0, 1.0, Vec2(0.3, 1.5 - 0.002), -0.5 * tilt);
+    const Manifold manifold = collideOnce(lower, upper);
+    REQUIRE(manifold.pointCount == 2);
+    const Vec2 lowerTopNormal = lower.rotation * Vec2(0.0, 1.0);
+    if (!near(manifold.normal, lowerTopNormal, 1e-12)) ++flips;  // B's face is the reference
+    const bool firstIsLeft = manifold.points[0].point.x() < manifold.points[1].point.x();
+    leftIds.push_back(manifold.points[firstIsLeft ? 0 : 1].id);
+    rightIds.push_back(manifold.points[firstIsLeft ? 1 : 0].id);
+  }
+  CHECK(flips > 0);   // some poses took B's face ...
+  CHECK(flips < 21);  // ... and some A's
+  CHECK(std::count(leftIds.begin(), leftIds.end(), leftIds.front()) == 21);
+  CHECK(std::count(rightIds.begin(), rightIds.end(), rightIds.front()) == 21);
+  CHECK(leftIds.front() != rightIds.front());
+}
+
 TEST_CASE("feature ids differ for different touching features", "[contact][feature-id]") {
   const Body slab = ground();
   const Manifold bottomFace = collideOnce(slab, box(1.0, 2.0, Vec2(0.0, 1.0 - 0.001)));

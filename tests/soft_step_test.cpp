@@ -302,11 +302,13 @@ TEST_CASE("load-scaled stiffness: without the leak one sweep per substep rattles
   CHECK(on > 0.1);
 }
 
-TEST_CASE("a tall stack stands on stiff enough springs: 20 boxes buckle at 30 Hz, stand at 60 Hz",
-          "[soft_step][stack][stability]") {
-  // A column on springs of rotational stiffness K per joint buckles once the weight's
-  // overturning moment outgrows them; K grows with ω², so 20 boxes need about 40 Hz
-  // (docs/soft-step.md).
+TEST_CASE(
+    "a 20-box stack stands at the defaults with friction in the relax solve, and leans "
+    "over with friction in both solves",
+    "[soft_step][stack][stability]") {
+  // Friction solved while the bias pushes the overlap out works against impulses that the relax
+  // solve then takes back; the column creeps sideways a little every substep and, 20 boxes
+  // high, leans over within 10 s (docs/soft-step.md).
   constexpr int kBoxes = 20;
   Scene scene = stackScene("soft_step", kBoxes, 0.6);
   const auto topTravel = [&] {
@@ -316,9 +318,9 @@ TEST_CASE("a tall stack stands on stiff enough springs: 20 boxes buckle at 30 Hz
     runSteps(*world, stepsIn(8.0));
     return (world->bodies().back().position - settled).norm();
   };
-  CHECK(topTravel() > 0.5);  // toppled
-  scene.solverSettings.softStep.contactHertz = 60.0;
-  CHECK(topTravel() < 0.05);  // stands, creeping by a few centimetres in 8 s
+  CHECK(topTravel() < 0.1);  // stands: a few centimetres in 8 s
+  scene.solverSettings.softStep.frictionInRelax = false;
+  CHECK(topTravel() > 0.5);  // leans over by more than half a box
 }
 
 TEST_CASE("a 40-box stack stands with 16 substeps of 240 Hz contacts", "[soft_step][stack]") {

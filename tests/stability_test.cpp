@@ -73,7 +73,10 @@ TEST_CASE(
   CHECK(holds("heavy_on_light", "sequential", 88));
   CHECK(fails("heavy_on_light", "sequential", 133));
   CHECK(holds("heavy_on_light", "sequential + 4 substeps", 60));
-  CHECK(holds("heavy_on_light", "micro", 1000));
+  // Micro's penetration moves keep the overlap small until the light boxes are squeezed
+  // sideways: it holds to a few hundred and fails by 500 (docs/stability.md).
+  CHECK(holds("heavy_on_light", "micro", 250));
+  CHECK(fails("heavy_on_light", "micro", 500));
 }
 
 TEST_CASE(

@@ -21,16 +21,12 @@ constexpr double kReferenceFaceTolerance = 0.1 * 0.005;
 /// normal falls back to +y.
 constexpr double kCoincidentCentres = 1e-12;
 
-/// Incident-vertex field of a feature id for a point made by clipping: this flag plus the side
-/// plane (0 or 1) that cut the incident edge, distinct from every vertex index below it.
-constexpr int kClippedBySidePlane = 0x80;
-
 /// Which feature of the polygon a circle touches: inside a face's region or a vertex's.
 enum class CircleRegion { Face = 0, Vertex = 1 };
 
 /// The feature id of a circle against a polygon: the polygon's face or vertex it touches.
 FeatureId circleRegionId(int feature, CircleRegion region) {
-  return makeFeatureId(feature, 0, static_cast<int>(region), false);
+  return makeFeatureId(feature, static_cast<int>(region));
 }
 
 int nextVertex(const Shape& polygon, int index) {
@@ -179,33 +175,24 @@ int incidentEdge(const Body& incident, const Vec2& referenceNormal) {
   return best;
 }
 
-/// A point of the incident edge while it is clipped, with the feature that made it.
-struct ClipVertex {
-  Vec2 point;          ///< world
-  int incidentVertex;  ///< a vertex index, or kClippedBySidePlane + side plane
-};
-using ClipSegment = std::array<ClipVertex, 2>;
+/// The incident edge while it is clipped: its two ends, in world coordinates.
+using ClipSegment = std::array<Vec2, 2>;
 
 ClipSegment incidentSegment(const Body& incident, int edge) {
-  const int second = nextVertex(incident.shape, edge);
-  return {ClipVertex{incident.toWorld(incident.shape.vertices[edge]), edge},
-          ClipVertex{incident.toWorld(incident.shape.vertices[second]), second}};
+  return {incident.toWorld(incident.shape.vertices[edge]),
+          incident.toWorld(incident.shape.vertices[nextVertex(incident.shape, edge)])};
 }
 
 /// Sutherland–Hodgman against one line: keeps the part of the segment where normal·x ≤ offset;
-/// a cut end is replaced by the crossing point, which takes the side plane as its feature.
-/// Returns how many points remain (0, 1 or 2).
-int clipSegmentToLine(const ClipSegment& in, const Vec2& normal, double offset, int sidePlane,
-                      ClipSegment& out) {
-  const double distance0 = normal.dot(in[0].point) - offset;
-  const double distance1 = normal.dot(in[1].point) - offset;
+/// a cut end is replaced by the crossing point. Returns how many points remain (0, 1 or 2).
+int clipSegmentToLine(const ClipSegment& in, const Vec2& normal, double offset, ClipSegment& out) {
+  const double distance0 = normal.dot(in[0]) - offset;
+  const double distance1 = normal.dot(in[1]) - offset;
   int count = 0;
   if (distance0 <= 0.0) out[count++] = in[0];
   if (distance1 <= 0.0) out[count++] = in[1];
   if (distance0 * distance1 < 0.0) {
-    const double fraction = distance0 / (distance0 - distance1);
-    out[count++] = {in[0].point + fraction * (in[1].point - in[0].point),
-                    kClippedBySidePlane + sidePlane};
+    out[count++] = in[0] + distance0 / (distance0 - distance1) * (in[1] - in[0]);
   }
   return count;
 }
@@ -214,11 +201,25 @@ int clipSegmentToLine(const ClipSegment& in, const Vec2& normal, double offset, 
 /// less than a segment survives (the edges only graze the side of the reference face).
 bool clipToSidePlanes(const ClipSegment& incident, const ReferenceFace& face, ClipSegment& out) {
   ClipSegment behindStart;
-  if (clipSegmentToLine(incident, -face.tangent, -face.tangent.dot(face.start), 0, behindStart) <
-      2) {
+  if (clipSegmentToLine(incident, -face.tangent, -face.tangent.dot(face.start), behindStart) < 2) {
     return false;
   }
-  return clipSegmentToLine(behindStart, face.tangent, face.tangent.dot(face.end), 1, out) == 2;
+  return clipSegmentToLine(behindStart, face.tangent, face.tangent.dot(face.end), out) == 2;
+}
+
+/// The feature id of a clipped point: the vertices of the two polygons at its end of the contact.
+/// The incident edge runs against the reference face, so the point nearer the face's start pairs
+/// the face's start vertex with the incident edge's end vertex, and the other the face's end
+/// with the incident start. Written as (vertex of A, vertex of B), it is the same whichever
+/// polygon gave the reference face, so a flip of the reference keeps each point's warm start.
+FeatureId clippedPointId(const ClipSegment& clipped, int which, const ReferenceFace& face,
+                         const Body& reference, int referenceEdge, const Body& incident, int edge,
+                         bool flipped) {
+  const double along = face.tangent.dot(clipped[which] - clipped[1 - which]);
+  const bool nearStart = along < 0.0 || (along == 0.0 && which == 0);
+  const int onReference = nearStart ? referenceEdge : nextVertex(reference.shape, referenceEdge);
+  const int onIncident = nearStart ? nextVertex(incident.shape, edge) : edge;
+  return flipped ? makeFeatureId(onIncident, onReference) : makeFeatureId(onReference, onIncident);
 }
 
 /// Two polygons: SAT on both bodies' faces, the reference face chosen with a tolerance that
@@ -242,14 +243,16 @@ int collidePolygons(const Body& a, const Body& b, double margin, Manifold& manif
 
   manifold.normal = flipped ? Vec2(-face.normal) : face.normal;
   int count = 0;
-  for (const ClipVertex& vertex : clipped) {
-    const double separation = face.normal.dot(vertex.point - face.start);
+  for (int which = 0; which < 2; ++which) {
+    const Vec2& onIncident = clipped[which];
+    const double separation = face.normal.dot(onIncident - face.start);
     if (separation >= margin) continue;
-    const Vec2 onReference = vertex.point - separation * face.normal;
-    const FeatureId id = makeFeatureId(referenceEdge, edge, vertex.incidentVertex, flipped);
+    const Vec2 onReference = onIncident - separation * face.normal;
+    const FeatureId id =
+        clippedPointId(clipped, which, face, reference, referenceEdge, incident, edge, flipped);
     manifold.points[count++] = flipped
-                                   ? contactPoint(a, b, vertex.point, onReference, -separation, id)
-                                   : contactPoint(a, b, onReference, vertex.point, -separation, id);
+                                   ? contactPoint(a, b, onIncident, onReference, -separation, id)
+                                   : contactPoint(a, b, onReference, onIncident, -separation, id);
   }
   manifold.pointCount = count;
   return count;

@@ -113,6 +113,7 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"load_acceleration", &s.loadAcceleration},
           {"soft_contacts", &s.softContacts},
           {"relax", &s.relax},
+          {"friction_in_relax", &s.frictionInRelax},
           {"warm_starting", &s.warmStarting},
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}};

@@ -22,12 +22,10 @@ namespace impulse2d {
 /// from step to step while the same features touch, so impulses can be carried over by it.
 using FeatureId = std::uint32_t;
 
-/// Builds a feature id from the reference edge, the incident edge, the incident vertex and
-/// whether A and B were swapped to find the reference face.
-inline FeatureId makeFeatureId(int referenceEdge, int incidentEdge, int incidentVertex,
-                               bool flipped) {
-  return static_cast<FeatureId>((referenceEdge & 0xff) | (incidentEdge & 0xff) << 8 |
-                                (incidentVertex & 0xff) << 16 | (flipped ? 1u : 0u) << 24);
+/// Builds a feature id from a feature of A and a feature of B (vertex indices for two polygons,
+/// collide.cpp), so it does not depend on which of the two gave the reference face.
+inline FeatureId makeFeatureId(int featureOfA, int featureOfB) {
+  return static_cast<FeatureId>((featureOfA & 0xffff) | (featureOfB & 0xffff) << 16);
 }
 
 /// Friction state of a contact point in the last solve, for frames and tests.

@@ -181,10 +181,12 @@ void SoftStepSolver::warmStart() {
   }
 }
 
-// One Gauss-Seidel sweep: the normal impulses of each contact, then its friction. With bias the
-// overlap is pushed out softly; without (relax) only the velocities are made consistent.
+// One Gauss-Seidel sweep: the normal impulses of each contact, then its friction (with
+// frictionInRelax, only in the relax sweep). With bias the overlap is pushed out softly; without
+// (relax) only the velocities are made consistent.
 // Returns the largest normal impulse change, the sweep's residual.
 double SoftStepSolver::solve(const StepContext& context, bool useBias, int substep) {
+  const bool frictionInRelax = settings_.frictionInRelax && settings_.relax;
   double largestChange = 0.0;
   for (Constraint& constraint : constraints_) {
     SolverBody& a = bodies_[size_t(constraint.bodyA)];
@@ -192,7 +194,7 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
     std::array<double, 2> before = {constraint.points[0].normalImpulse,
                                     constraint.points[1].normalImpulse};
     solveNormals(constraint, a, b, useBias);
-    solveFriction(constraint, a, b);
+    if (!useBias || !frictionInRelax) solveFriction(constraint, a, b);
     for (int i = 0; i < constraint.pointCount; ++i) {
       const ConstraintPoint& cp = constraint.points[size_t(i)];
       const double change = cp.normalImpulse - before[size_t(i)];
