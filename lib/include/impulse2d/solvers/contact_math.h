@@ -13,6 +13,15 @@
 
 namespace impulse2d {
 
+/// What an iterative solver's impulses read and change of a body: a compact copy of its
+/// velocities and inverse mass and inertia (zero for static bodies), written back at the end.
+struct SolverBody {
+  Vec2 velocity = Vec2::Zero();
+  double angularVelocity = 0.0;
+  double inverseMass = 0.0;
+  double inverseInertia = 0.0;
+};
+
 // ---- velocity change per unit impulse: the one building block of every effective mass ----
 
 /// The velocity change of `body` along `measureDirection` at `measurePoint` that a unit impulse

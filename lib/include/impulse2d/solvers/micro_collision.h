@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "impulse2d/solver.h"
+#include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/worst_first_queue.h"
 
 namespace impulse2d {
@@ -22,15 +23,6 @@ class MicroCollisionSolver : public ContactSolver {
   const MicroCollisionSettings& settings() const { return settings_; }
 
  private:
-  /// What resolution needs to know of one contact point between impulses or moves.
-  /// What an impulse changes of one body: its velocities, kept apart from the bodies during the
-  /// velocity phase so the hot loop reads little memory.
-  struct SolverBody {
-    Vec2 velocity = Vec2::Zero();
-    double angularVelocity = 0.0;
-    double inverseMass = 0.0;
-    double inverseInertia = 0.0;
-  };
   /// What a penetration move changes of one body: its pose, the rotation as cosine and sine.
   struct Pose {
     Vec2 position = Vec2::Zero();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "impulse2d/solver.h"
+#include "impulse2d/solvers/contact_math.h"
 
 namespace impulse2d {
 
@@ -34,13 +35,6 @@ class SequentialImpulseSolver : public ContactSolver {
   const SequentialImpulseSettings& settings() const { return settings_; }
 
  private:
-  /// What the sweeps read and change of a body: a copy, written back after the sweeps.
-  struct SolverBody {
-    Vec2 velocity = Vec2::Zero();
-    double angularVelocity = 0.0;
-    double inverseMass = 0.0;
-    double inverseInertia = 0.0;
-  };
   /// Per contact point, computed once before the sweeps (Box2D-Lite's PreStep).
   struct PointState {
     /// The arms' torque per unit impulse along the normal and the tangent, r × n and r × t for
