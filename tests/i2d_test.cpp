@@ -448,7 +448,7 @@ TEST_CASE("run --error-vs-reference writes one row per solve and summarises the 
   CHECK(outcome.exitCode == 0);
   const std::vector<std::string> lines = readLines(path);
   REQUIRE(lines.size() == 6);
-  CHECK(lines[0] == "solve,t,points,impulse_error,velocity_error,violation");
+  CHECK(lines[0] == "solve,t,points,impulse_error,velocity_error,violation,exact_answer");
   for (const char* line : {"impulse err  median", "velocity err median", "violation    median"}) {
     CHECK(outcome.out.find(line) != std::string::npos);
   }

@@ -24,16 +24,18 @@ namespace {
 using impulse2d::ReferenceError;
 
 /// Writes FILE.tmp, then renames it: FILE appears only when complete.
-/// One row per velocity solve (substeps solve several times a step), at the solve's time.
+/// One row per velocity solve (substeps solve several times a step), at the solve's time;
+/// exact_answer says whether the reference found one (without it the row has no errors).
 void writeErrors(const std::string& path, const std::vector<ReferenceError>& errors,
                  double solveDt) {
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << "solve,t,points,impulse_error,velocity_error,violation\n";
+    out << "solve,t,points,impulse_error,velocity_error,violation,exact_answer\n";
     for (const ReferenceError& error : errors) {
       out << error.step + 1 << ',' << double(error.step + 1) * solveDt << ',' << error.points << ','
-          << error.impulseError << ',' << error.velocityError << ',' << error.violation << '\n';
+          << error.impulseError << ',' << error.velocityError << ',' << error.violation << ','
+          << (error.noExactAnswer.empty() ? "found" : "none") << '\n';
     }
     if (!out.flush()) {
       std::remove(temporary.c_str());
@@ -60,6 +62,22 @@ std::string statistics(std::vector<double> values) {
   return text.str();
 }
 
+/// The solves the reference found no exact answer for, if any: how many, and the first's reason.
+void printUnanswered(const std::vector<ReferenceError>& errors) {
+  const auto first = std::find_if(errors.begin(), errors.end(), [](const ReferenceError& error) {
+    return !error.noExactAnswer.empty();
+  });
+  if (first == errors.end()) return;
+  const auto count = std::count_if(first, errors.end(), [](const ReferenceError& error) {
+    return !error.noExactAnswer.empty();
+  });
+  std::cout << "no answer    " << count << " of " << errors.size()
+            << " solves have no exact answer, not measured (first: solve " << first->step + 1
+            << ", " << first->noExactAnswer
+            << "); biased targets on a pile can ask for an answer that does not exist "
+               "(docs/global-reference.md)\n";
+}
+
 void printErrorSummary(const std::vector<ReferenceError>& errors) {
   std::vector<double> impulse, velocity, violation;
   for (const ReferenceError& error : errors) {
@@ -70,6 +88,7 @@ void printErrorSummary(const std::vector<ReferenceError>& errors) {
   std::cout << "impulse err  " << statistics(impulse) << "  (|λ - λ*| / |λ*|)\n"
             << "velocity err " << statistics(velocity) << "  (the same in the energy norm)\n"
             << "violation    " << statistics(violation) << "  (relative to the impulse scale)\n";
+  printUnanswered(errors);
 }
 
 }  // namespace

@@ -489,7 +489,7 @@ void ReferenceSolver::applyImpulses(const StepContext& context,
 
 void ReferenceSolver::fail(const std::string& reason) {
   report_.converged = false;
-  throw std::runtime_error("reference solver: " + reason);
+  throw ReferenceSolveFailure(reason);
 }
 
 void ReferenceSolver::solvePositions(const StepContext& context) {

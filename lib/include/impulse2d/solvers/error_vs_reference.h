@@ -29,6 +29,10 @@ struct ReferenceError {
   /// velocity, friction outside the cone, friction short of the limit or pushing along while
   /// sliding), in N s relative to the step's impulse scale: the reference's own residual measure.
   double violation = 0.0;
+  /// Why the reference found no exact answer of this solve's problem (empty when it did); the
+  /// errors above are then NaN. A method's biased targets on a statically indeterminate pile can
+  /// ask for an answer that does not exist (docs/global-reference.md).
+  std::string noExactAnswer;
 };
 
 /// ‖λ − λ*‖ / ‖λ*‖; NaN when ‖λ*‖ = 0 (no exact impulse to be relative to).

@@ -21,6 +21,8 @@
 #pragma once
 
 #include <array>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -32,12 +34,20 @@
 
 namespace impulse2d {
 
+/// The reference found no exact answer for a step (every path failed, or the answer's residual
+/// exceeds the tolerance). Its message starts "reference solver: " and says why.
+class ReferenceSolveFailure : public std::runtime_error {
+ public:
+  explicit ReferenceSolveFailure(const std::string& reason)
+      : std::runtime_error("reference solver: " + reason) {}
+};
+
 class ReferenceSolver : public ContactSolver {
  public:
   explicit ReferenceSolver(const ReferenceSolverSettings& settings) : settings_(settings) {}
 
   std::string name() const override { return "reference"; }
-  /// Builds and solves the step's LCP and applies its impulses. Throws std::runtime_error (after
+  /// Builds and solves the step's LCP and applies its impulses. Throws ReferenceSolveFailure (after
   /// setting lastReport().converged = false) when Lemke fails or the residual exceeds the
   /// tolerance: never a silent half answer.
   void solveVelocities(const StepContext& context) override;
