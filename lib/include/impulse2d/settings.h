@@ -288,7 +288,8 @@ struct SoftStepSettings {
   /// Friction only in the relax solve, against the normal impulses left once the bias is gone
   /// (Box2D v3 since 2025); off, in both solves of each substep (Solver2D, v3.0). With relax off
   /// friction is always in the one solve there is. A 40-box stack at the defaults stands about
-  /// twice as long with it (docs/soft-step.md).
+  /// twice as long with it; it leans on warm starting, which carries friction between substeps
+  /// (without both, the demo's 10-box stack falls; docs/soft-step.md).
   bool frictionInRelax = true;
   /// Begin each step from the last step's impulses (by feature id) and each substep from the last
   /// substep's. Off: every substep starts from zero.
