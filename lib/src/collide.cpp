@@ -207,19 +207,23 @@ bool clipToSidePlanes(const ClipSegment& incident, const ReferenceFace& face, Cl
   return clipSegmentToLine(behindStart, face.tangent, face.tangent.dot(face.end), out) == 2;
 }
 
-/// The feature id of a clipped point: the vertices of the two polygons at its end of the contact.
-/// The incident edge runs against the reference face, so the point nearer the face's start pairs
-/// the face's start vertex with the incident edge's end vertex, and the other the face's end
-/// with the incident start. Written as (vertex of A, vertex of B), it is the same whichever
-/// polygon gave the reference face, so a flip of the reference keeps each point's warm start.
-FeatureId clippedPointId(const ClipSegment& clipped, int which, const ReferenceFace& face,
-                         const Body& reference, int referenceEdge, const Body& incident, int edge,
-                         bool flipped) {
-  const double along = face.tangent.dot(clipped[which] - clipped[1 - which]);
-  const bool nearStart = along < 0.0 || (along == 0.0 && which == 0);
-  const int onReference = nearStart ? referenceEdge : nextVertex(reference.shape, referenceEdge);
-  const int onIncident = nearStart ? nextVertex(incident.shape, edge) : edge;
-  return flipped ? makeFeatureId(onIncident, onReference) : makeFeatureId(onReference, onIncident);
+/// The feature ids of the two clipped points: the vertices of the two polygons at each end of the
+/// contact. The incident edge runs against the reference face, so the point nearer the face's
+/// start pairs the face's start vertex with the incident edge's end vertex, and the other the
+/// face's end with the incident start. Written as (vertex of A, vertex of B), an id is the same
+/// whichever polygon gave the reference face, so a flip of the reference keeps the warm start.
+std::array<FeatureId, 2> clippedPointIds(const ClipSegment& clipped, const ReferenceFace& face,
+                                         const Body& reference, int referenceEdge,
+                                         const Body& incident, int edge, bool flipped) {
+  const auto id = [&](int onReference, int onIncident) {
+    return flipped ? makeFeatureId(onIncident, onReference)
+                   : makeFeatureId(onReference, onIncident);
+  };
+  const FeatureId nearStart = id(referenceEdge, nextVertex(incident.shape, edge));
+  const FeatureId nearEnd = id(nextVertex(reference.shape, referenceEdge), edge);
+  const bool firstNearStart = face.tangent.dot(clipped[1] - clipped[0]) >= 0.0;
+  return firstNearStart ? std::array<FeatureId, 2>{nearStart, nearEnd}
+                        : std::array<FeatureId, 2>{nearEnd, nearStart};
 }
 
 /// Two polygons: SAT on both bodies' faces, the reference face chosen with a tolerance that
@@ -242,14 +246,15 @@ int collidePolygons(const Body& a, const Body& b, double margin, Manifold& manif
   }
 
   manifold.normal = flipped ? Vec2(-face.normal) : face.normal;
+  const std::array<FeatureId, 2> ids =
+      clippedPointIds(clipped, face, reference, referenceEdge, incident, edge, flipped);
   int count = 0;
   for (int which = 0; which < 2; ++which) {
     const Vec2& onIncident = clipped[which];
     const double separation = face.normal.dot(onIncident - face.start);
     if (separation >= margin) continue;
     const Vec2 onReference = onIncident - separation * face.normal;
-    const FeatureId id =
-        clippedPointId(clipped, which, face, reference, referenceEdge, incident, edge, flipped);
+    const FeatureId id = ids[size_t(which)];
     manifold.points[count++] = flipped
                                    ? contactPoint(a, b, onIncident, onReference, -separation, id)
                                    : contactPoint(a, b, onReference, onIncident, -separation, id);

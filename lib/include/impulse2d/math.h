@@ -27,6 +27,11 @@ inline Vec2 leftPerpendicular(const Vec2& v) {
   return Vec2(-v.y(), v.x());
 }
 
+/// r turned by the rotation whose cosine and sine are (c, s).
+inline Vec2 rotate(double c, double s, const Vec2& r) {
+  return Vec2(c * r.x() - s * r.y(), s * r.x() + c * r.y());
+}
+
 /// The rotation matrix of an angle in radians (counter-clockwise positive).
 inline Mat2 rotation(double angle) {
   Mat2 r;

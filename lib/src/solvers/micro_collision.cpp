@@ -96,12 +96,8 @@ Vec2 MicroCollisionSolver::contactVelocityNow(const PointState& state) const {
 void MicroCollisionSolver::applyImpulse(const PointState& state, const Vec2& impulse) {
   const Vec2 P =
       normalPart(impulse) * state.normal + tangentPart(impulse) * leftPerpendicular(state.normal);
-  SolverBody& a = solverBodies_[state.bodyA];
-  SolverBody& b = solverBodies_[state.bodyB];
-  a.velocity -= a.inverseMass * P;
-  a.angularVelocity -= a.inverseInertia * cross(state.armA, P);
-  b.velocity += b.inverseMass * P;
-  b.angularVelocity += b.inverseInertia * cross(state.armB, P);
+  applyPairImpulse(solverBodies_[state.bodyA], solverBodies_[state.bodyB], state.armA, state.armB,
+                   P);
 }
 
 // One point's state before the solve; with warm starting, its last totals are applied at once.

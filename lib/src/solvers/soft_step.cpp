@@ -12,26 +12,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// r turned by the rotation whose cosine and sine are (c, s).
-Vec2 rotate(double c, double s, const Vec2& r) {
-  return Vec2(c * r.x() - s * r.y(), s * r.x() + c * r.y());
-}
-
-/// Velocity of a solver body's material at arm r.
-template <typename SolverBody>
-Vec2 pointVelocity(const SolverBody& body, const Vec2& r) {
-  return body.velocity + cross(body.angularVelocity, r);
-}
-
-/// Applies the impulse P at arms rA, rB: −P to A, +P to B.
-template <typename SolverBody>
-void applyImpulse(SolverBody& a, SolverBody& b, const Vec2& rA, const Vec2& rB, const Vec2& P) {
-  a.velocity -= a.inverseMass * P;
-  a.angularVelocity -= a.inverseInertia * cross(rA, P);
-  b.velocity += b.inverseMass * P;
-  b.angularVelocity += b.inverseInertia * cross(rB, P);
-}
-
 }  // namespace
 
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
@@ -175,8 +155,8 @@ void SoftStepSolver::warmStart() {
         continue;
       }
       cp.totalNormalImpulse += cp.normalImpulse;
-      applyImpulse(a, b, cp.armA, cp.armB,
-                   cp.normalImpulse * constraint.normal + cp.tangentImpulse * tangent);
+      applyPairImpulse(a, b, cp.armA, cp.armB,
+                       cp.normalImpulse * constraint.normal + cp.tangentImpulse * tangent);
     }
   }
 }
@@ -238,7 +218,7 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverB
     const double change = total - cp.normalImpulse;
     cp.normalImpulse = total;
     cp.totalNormalImpulse += change;
-    applyImpulse(a, b, cp.armA, cp.armB, change * normal);
+    applyPairImpulse(a, b, cp.armA, cp.armB, change * normal);
   }
 }
 
@@ -252,7 +232,7 @@ void SoftStepSolver::solveFriction(Constraint& constraint, SolverBody& a, Solver
     const double total = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
     const double change = total - cp.tangentImpulse;
     cp.tangentImpulse = total;
-    applyImpulse(a, b, cp.armA, cp.armB, change * tangent);
+    applyPairImpulse(a, b, cp.armA, cp.armB, change * tangent);
   }
 }
 
@@ -292,7 +272,7 @@ void SoftStepSolver::applyRestitution() {
       const double change = total - cp.normalImpulse;
       cp.normalImpulse = total;
       cp.totalNormalImpulse += change;
-      applyImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
+      applyPairImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
     }
   }
 }

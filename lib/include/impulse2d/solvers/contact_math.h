@@ -22,6 +22,21 @@ struct SolverBody {
   double inverseInertia = 0.0;
 };
 
+/// Velocity of a solver body's material at arm r (any type with velocity and angularVelocity).
+template <typename Velocities>
+Vec2 pointVelocity(const Velocities& body, const Vec2& r) {
+  return body.velocity + cross(body.angularVelocity, r);
+}
+
+/// The impulse P at arms rA, rB of two solver bodies: −P to A, +P to B.
+template <typename Velocities>
+void applyPairImpulse(Velocities& a, Velocities& b, const Vec2& rA, const Vec2& rB, const Vec2& P) {
+  a.velocity -= a.inverseMass * P;
+  a.angularVelocity -= a.inverseInertia * cross(rA, P);
+  b.velocity += b.inverseMass * P;
+  b.angularVelocity += b.inverseInertia * cross(rB, P);
+}
+
 // ---- velocity change per unit impulse: the one building block of every effective mass ----
 
 /// The velocity change of `body` along `measureDirection` at `measurePoint` that a unit impulse

@@ -33,10 +33,7 @@ class MicroCollisionSolver : public ContactSolver {
     double inverseInertia = 0.0;
     bool movable = false;  ///< not static
     bool moved = false;    ///< since the body last got its pose
-    Vec2 toWorld(const Vec2& local) const {
-      return position +
-             Vec2(cosine * local.x() - sine * local.y(), sine * local.x() + cosine * local.y());
-    }
+    Vec2 toWorld(const Vec2& local) const { return position + rotate(cosine, sine, local); }
   };
   struct PointState {
     // What the penetration phase reads, together ...
