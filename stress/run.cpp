@@ -44,6 +44,7 @@ std::vector<Method> extraMethods() {
       {"sequential + 4 substeps", "sequential", {"world.substeps=4"}},
       {"sequential + speculative contacts", "sequential", {"world.speculative_contacts=true"}},
       {"sequential − bias", "sequential", {"solver.penetration_bias=false"}},
+      {"soft step − speculative contacts", "soft_step", {"solver.speculative_contacts=false"}},
       {"soft step, 16 substeps at 240 Hz",
        "soft_step",
        {"solver.substeps=16", "solver.contact_hertz=240"}},

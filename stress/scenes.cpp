@@ -115,6 +115,31 @@ constexpr int kLightBoxes = 3;
 /// sequential solvers leave (0.005 m), a sag a student sees on a 1 m box.
 constexpr double kPenetrationLimit = 0.02;
 
+/// m. The deepest contact from step `from` on, as PenetrationProbe; but a stack whose boxes were
+/// squeezed out (a body more than half a box sideways from where it started) has collapsed, and
+/// the figure is then that sideways distance: a collapsed stack has no deep contact left to show.
+class SinkProbe : public Probe {
+ public:
+  explicit SinkProbe(long from) : penetration_(from) {}
+  void observe(const Simulation& simulation) override {
+    penetration_.observe(simulation);
+    const std::vector<Body>& bodies = simulation.bodies();
+    if (starts_.empty()) {
+      for (const Body& body : bodies) starts_.push_back(body.position.x());
+    }
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      const double sideways = std::abs(bodies[i].position.x() - starts_[i]);
+      if (sideways > 0.5 * kUnit) collapse_ = std::max(collapse_, sideways);
+    }
+  }
+  double measure() const override { return std::max(penetration_.measure(), collapse_); }
+
+ private:
+  PenetrationProbe penetration_;
+  std::vector<double> starts_;
+  double collapse_ = 0.0;
+};
+
 Scene heavyOnLight(double ratio) {
   Scene scene = baseScene("heavy_on_light", kStructureSteps);
   scene.bodies.push_back(ground(material(kFriction)));
@@ -255,6 +280,77 @@ Scene newtonsCradle(double balls) {
   }
   return scene;
 }
+
+/// Landing on a slope: unit boxes dropped flat from about this height (m, the knob) onto a static
+/// slope of this angle, friction kSlopeFriction on both, more than tan 20° = 0.36, so each box
+/// must stop where it lands: an inelastic impact with Coulomb friction removes a vertical fall's
+/// tangential speed whenever μ ≥ tan θ. How deep a box is when its landing step is found depends
+/// on where in a step it reaches the slope, so kLandingBoxes boxes, kLandingSpacing (m) apart
+/// along the slope, fall from heights that differ by a fraction of a step's fall.
+constexpr double kSlopeAngle = 20.0 * M_PI / 180.0;
+constexpr double kSlopeFriction = 0.5;
+constexpr int kLandingBoxes = 8;
+constexpr double kLandingSpacing = 3.0;
+/// m. Landing fails when a box slides this far down the slope after its first contact.
+constexpr double kSlideLimit = 0.01;
+
+Vec2 slopeTangent() { return Vec2(std::cos(kSlopeAngle), std::sin(kSlopeAngle)); }
+Vec2 slopeNormal() { return Vec2(-std::sin(kSlopeAngle), std::cos(kSlopeAngle)); }
+
+Scene slopeLanding(double drop) {
+  Scene scene = baseScene("slope_landing", kStructureSteps);
+  BodyDef slope = ground(material(kSlopeFriction));
+  slope.name = "slope";
+  slope.angle = kSlopeAngle;
+  slope.position = -0.5 * kGroundDepth * slopeNormal();
+  scene.bodies.push_back(slope);
+  const double stepFall = std::sqrt(2.0 * kGravity * drop) * kDt;  // the last step's fall
+  for (int k = 0; k < kLandingBoxes; ++k) {
+    BodyDef box = material(kSlopeFriction);
+    box.name = "box" + std::to_string(k);
+    box.shape = makeBox(kUnit, kUnit);
+    box.angle = kSlopeAngle;
+    const double along = (k - 0.5 * (kLandingBoxes - 1)) * kLandingSpacing;
+    const double height = drop + stepFall * k / kLandingBoxes;
+    box.position = along * slopeTangent() + (0.5 * kUnit + height) * slopeNormal();
+    scene.bodies.push_back(box);
+  }
+  return scene;
+}
+
+/// m. The farthest any dynamic body moved down the slope after the step in which it first
+/// stopped falling freely (its velocity changed by other than g·dt): the slide after landing.
+class LandingSlideProbe : public Probe {
+ public:
+  void observe(const Simulation& simulation) override {
+    const std::vector<Body>& bodies = simulation.bodies();
+    boxes_.resize(bodies.size());
+    const Vec2 gravityStep = simulation.settings().dt * simulation.settings().gravity;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      if (bodies[i].isStatic()) continue;
+      Box& box = boxes_[i];
+      const double along = bodies[i].position.dot(slopeTangent());
+      if (simulation.stepCount() > 0 && !box.landed) {
+        box.landed = (bodies[i].velocity - box.lastVelocity - gravityStep).norm() > kTolerance;
+        box.landedAt = along;
+      }
+      box.lastVelocity = bodies[i].velocity;
+      if (box.landed) largest_ = std::max(largest_, box.landedAt - along);
+    }
+  }
+  double measure() const override { return largest_; }
+
+ private:
+  /// m/s. A velocity change this far from gravity's is a contact's.
+  static constexpr double kTolerance = 1e-6;
+  struct Box {
+    Vec2 lastVelocity = Vec2::Zero();
+    bool landed = false;
+    double landedAt = 0.0;
+  };
+  std::vector<Box> boxes_;
+  double largest_ = 0.0;
+};
 
 /// The arch: a semicircle of this many voussoirs between these radii (m), standing on the ground.
 constexpr int kVoussoirs = 9;
@@ -398,10 +494,14 @@ void stackScenes(std::vector<StressScene>& scenes) {
   scenes.push_back({"heavy_on_light",
                     "Heavy box on light ones",
                     ratio,
-                    {"deepest contact penetration (m)", kPenetrationLimit,
-                     "the heavy box visibly sinks into the box under it (2 cm)", true},
+                    {"deepest contact penetration (m), or how far a box was squeezed out "
+                     "sideways (over half a box)",
+                     kPenetrationLimit,
+                     "the heavy box visibly sinks into the box under it (2 cm), or the light boxes "
+                     "are squeezed out",
+                     true},
                     heavyOnLight,
-                    probeOf<PenetrationProbe>(kSettledStep),
+                    probeOf<SinkProbe>(kSettledStep),
                     {},
                     {},
                     {"sequential + 4 substeps", "soft step, 16 substeps at 240 Hz",
@@ -439,7 +539,19 @@ void motionScenes(std::vector<StressScene>& scenes) {
                     probeOf<WallProbe>(1, 0.0, kThroughCap),
                     {},
                     {},
-                    {"sequential + speculative contacts", "sequential + 4 substeps"}});
+                    {"sequential + speculative contacts", "sequential + 4 substeps",
+                     "soft step − speculative contacts"}});
+  scenes.push_back({"slope_landing",
+                    "Landing on a slope that holds",
+                    {"drop height", "m", 0.0, 1.0, KnobScale::Linear},
+                    {"slide down the slope after the box first touches it (m)", kSlideLimit,
+                     "the box lands, then slides down the slope before it sticks", true},
+                    slopeLanding,
+                    probeOf<LandingSlideProbe>(),
+                    {},
+                    {},
+                    {"sequential + speculative contacts", "sequential − bias",
+                     "soft step − speculative contacts"}});
   scenes.push_back({"overlap_recovery",
                     "Overlap recovery",
                     {"overlap", "box sizes", 0.0, 0.5, KnobScale::Linear},

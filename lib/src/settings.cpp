@@ -115,6 +115,7 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"relax", &s.relax},
           {"friction_in_relax", &s.frictionInRelax},
           {"warm_starting", &s.warmStarting},
+          {"speculative_contacts", &s.speculativeContacts},
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}};
 }

@@ -143,9 +143,14 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   return true;
 }
 
+// Speculative contacts, by the world's setting or the solver's wish.
+bool World::speculativeContacts() const {
+  return settings_.speculativeContacts || solver_->wantsSpeculativeContacts();
+}
+
 // Speculative contacts: the gap the pair can close within the substep is added to the margin.
 double World::contactDistance(const Body& a, const Body& b, double h) const {
-  if (!settings_.speculativeContacts) return settings_.contactMargin;
+  if (!speculativeContacts()) return settings_.contactMargin;
   return settings_.contactMargin + (b.velocity - a.velocity).norm() * h;
 }
 
@@ -185,7 +190,7 @@ void World::computeSweepBounds(double h) {
   sweepBounds_.resize(bodies_.size());
   for (size_t i = 0; i < bodies_.size(); ++i) {
     const Body& body = bodies_[i];
-    const double reach = settings_.speculativeContacts ? body.velocity.norm() * h : 0.0;
+    const double reach = speculativeContacts() ? body.velocity.norm() * h : 0.0;
     sweepBounds_[i] = {body.bounds.lower - Vec2(reach, reach),
                        body.bounds.upper + Vec2(reach, reach)};
   }

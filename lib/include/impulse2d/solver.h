@@ -74,6 +74,9 @@ class ContactSolver {
   /// True for a method that moves the bodies itself within its own substeps (soft step): the
   /// world then leaves velocities and positions to it and only clears the forces it used.
   virtual bool integratesBodies() const { return false; }
+  /// True for a method whose contacts are speculative whatever the world's speculativeContacts
+  /// says (soft step, as Box2D v3: every contact is found before the surfaces meet).
+  virtual bool wantsSpeculativeContacts() const { return false; }
 };
 
 /// The names of the solvers this library builds, in the order they were written.

@@ -87,6 +87,7 @@ class World : public Simulation {
   void layOutSweep();
   ManifoldIterator keepSleepingManifolds(ManifoldIterator old, const BodyPair& before);
   bool collidePair(const BodyPair& pair, double h, Manifold& manifold);
+  bool speculativeContacts() const;
   double contactDistance(const Body& a, const Body& b, double h) const;
   bool involvesAwakeBody(const Manifold& manifold) const;
   void buildIslands();

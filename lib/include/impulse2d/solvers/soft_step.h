@@ -48,6 +48,7 @@ class SoftStepSolver : public ContactSolver {
   /// iterations: substeps made; residual: the largest normal impulse change in the last relax.
   SolveReport lastReport() const override { return report_; }
   bool integratesBodies() const override { return true; }
+  bool wantsSpeculativeContacts() const override { return settings_.speculativeContacts; }
 
   const SoftStepSettings& settings() const { return settings_; }
 
