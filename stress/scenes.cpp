@@ -294,8 +294,12 @@ constexpr double kLandingSpacing = 3.0;
 /// m. Landing fails when a box slides this far down the slope after its first contact.
 constexpr double kSlideLimit = 0.01;
 
-Vec2 slopeTangent() { return Vec2(std::cos(kSlopeAngle), std::sin(kSlopeAngle)); }
-Vec2 slopeNormal() { return Vec2(-std::sin(kSlopeAngle), std::cos(kSlopeAngle)); }
+Vec2 slopeTangent() {
+  return Vec2(std::cos(kSlopeAngle), std::sin(kSlopeAngle));
+}
+Vec2 slopeNormal() {
+  return Vec2(-std::sin(kSlopeAngle), std::cos(kSlopeAngle));
+}
 
 Scene slopeLanding(double drop) {
   Scene scene = baseScene("slope_landing", kStructureSteps);

@@ -123,12 +123,13 @@ TEST_CASE("a fast small ball tunnels through a thin wall once one step jumps pas
   }
 }
 
-TEST_CASE("a box dropped on a slope that holds it stops where it lands, unless a method "
-          "loses its friction at the landing",
-          "[stability][slope_landing][speculative][bias]") {
+TEST_CASE(
+    "a box dropped on a slope that holds it stops where it lands, unless a method "
+    "loses its friction at the landing",
+    "[stability][slope_landing][speculative][bias]") {
   // μ 0.5 > tan 20°: an inelastic landing with Coulomb friction leaves no speed along the slope.
-  for (const char* method : {"micro", "reference", "box2d", "sequential + speculative contacts",
-                             "sequential − bias"}) {
+  for (const char* method :
+       {"micro", "reference", "box2d", "sequential + speculative contacts", "sequential − bias"}) {
     INFO(method);
     CHECK(holds("slope_landing", method, 1.0));
   }
