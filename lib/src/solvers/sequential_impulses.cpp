@@ -160,21 +160,22 @@ inline SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNorma
 }
 
 // Both points of a flat contact at once: the new totals x solve the 2×2 complementarity problem
-// K x + q ≥ 0 ⟂ x ≥ 0, with q the velocity error the totals would leave if they were zero.
+// K x + q ≥ 0 ⟂ x ≥ 0, with q the velocity error the totals would leave if they were zero. The
+// two points' figures are built as whole vectors from scalars: filled in one element at a time,
+// each vector would go through memory and stall the packed arithmetic that reads it back.
 inline void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& manifold,
                                                           BodyPair& bodies,
                                                           std::array<PointImpulse, 2>& impulses) {
   PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
-  Vec2 totals;
-  Vec2 velocityError;
-  for (int i = 0; i < 2; ++i) {
-    totals(i) = points[i].normalImpulse;
-    velocityError(i) =
-        bodies.relativeNormalVelocity(points[i], manifold.normal) - points[i].targetNormalVelocity;
-    impulses[static_cast<size_t>(i)].desiredChange = -velocityError(i);
-  }
+  const double error0 =
+      bodies.relativeNormalVelocity(points[0], manifold.normal) - points[0].targetNormalVelocity;
+  const double error1 =
+      bodies.relativeNormalVelocity(points[1], manifold.normal) - points[1].targetNormalVelocity;
+  impulses[0].desiredChange = -error0;
+  impulses[1].desiredChange = -error1;
+  const Vec2 totals(points[0].normalImpulse, points[1].normalImpulse);
   const Vec2 newTotals = solveTwoPointLcp(manifold.normalCoupling, manifold.inverseCoupling,
-                                          velocityError - manifold.normalCoupling * totals);
+                                          Vec2(error0, error1) - manifold.normalCoupling * totals);
   for (int i = 0; i < 2; ++i) {
     impulses[static_cast<size_t>(i)].normalImpulse = newTotals(i) - totals(i);
     points[i].normalImpulse = newTotals(i);

@@ -22,13 +22,18 @@ Vec2 solveTwoPointLcp(const Mat2& k, const Vec2& q);
 
 /// The same with K⁻¹ (inverseOrZero(k, 0)) computed once by the caller, for a K that stays the
 /// same over many solves (the velocity sweeps of one step).
+/// Written on scalars: it runs once per flat contact per sweep, and vectors built and taken apart
+/// here would go through memory.
 inline Vec2 solveTwoPointLcp(const Mat2& k, const Mat2& kInverse, const Vec2& q) {
-  const Vec2 both = -(kInverse * q);
-  if (both.minCoeff() >= 0.0) return both;
-  const Vec2 firstOnly(-q(0) / k(0, 0), 0.0);
-  if (firstOnly(0) >= 0.0 && k(1, 0) * firstOnly(0) + q(1) >= 0.0) return firstOnly;
-  const Vec2 secondOnly(0.0, -q(1) / k(1, 1));
-  if (secondOnly(1) >= 0.0 && k(0, 1) * secondOnly(1) + q(0) >= 0.0) return secondOnly;
+  const double q0 = q(0);
+  const double q1 = q(1);
+  const double both0 = -(kInverse(0, 0) * q0 + kInverse(0, 1) * q1);
+  const double both1 = -(kInverse(1, 0) * q0 + kInverse(1, 1) * q1);
+  if (both0 >= 0.0 && both1 >= 0.0) return Vec2(both0, both1);
+  const double firstOnly = -q0 / k(0, 0);
+  if (firstOnly >= 0.0 && k(1, 0) * firstOnly + q1 >= 0.0) return Vec2(firstOnly, 0.0);
+  const double secondOnly = -q1 / k(1, 1);
+  if (secondOnly >= 0.0 && k(0, 1) * secondOnly + q0 >= 0.0) return Vec2(0.0, secondOnly);
   return Vec2::Zero();  // the last case, q ≥ 0: neither point needs to push
 }
 
