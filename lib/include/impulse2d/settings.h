@@ -295,11 +295,11 @@ struct SoftStepSettings {
   /// substep's. Off: every substep starts from zero.
   bool warmStarting = true;
   /// Speculative contacts whatever the world's speculative_contacts says, as Box2D v3 always
-  /// has them: a falling body's contact is found the step before it lands, and the biased solve
-  /// stops it at the surface, where friction meets the whole landing impulse. Off (and the world's
-  /// off): it lands overlapping, the landing is spread over the soft contact's substeps, and a
-  /// box dropped 0.2 m onto a 20° slope with μ 0.49 slides 8.5 cm before it sticks, where
-  /// sequential impulses stop it at once (docs/soft-step.md, "Landing on a slope").
+  /// has them: a falling body's contact is found the step before it lands, so the solve stops it
+  /// at the surface instead of finding it overlapping. Off (and the world's off): a 12 m/s ball
+  /// tunnels through a 0.1 m wall, and a box dropped 0.2 m onto a 20° slope with μ 0.49 slides
+  /// 8 cm after it lands (0.2 cm with them on; docs/soft-step.md, "A landing that one iteration
+  /// per substep does not finish").
   bool speculativeContacts = true;
   /// After the substeps, one pass that makes a closing contact separate at −e times its closing
   /// speed before the step (Box2D v3's b2ApplyRestitution). Off: soft contacts do not bounce.
