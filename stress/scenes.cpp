@@ -115,6 +115,9 @@ constexpr int kLightBoxes = 3;
 /// sequential solvers leave (0.005 m), a sag a student sees on a 1 m box.
 constexpr double kPenetrationLimit = 0.02;
 
+/// m. A box this far sideways from where it started has left the stack it was in: half a box.
+constexpr double kSqueezedOut = 0.5 * kUnit;
+
 /// m. The deepest contact from step `from` on, as PenetrationProbe; but a stack whose boxes were
 /// squeezed out (a body more than half a box sideways from where it started) has collapsed, and
 /// the figure is then that sideways distance: a collapsed stack has no deep contact left to show.
@@ -129,7 +132,7 @@ class SinkProbe : public Probe {
     }
     for (size_t i = 0; i < bodies.size(); ++i) {
       const double sideways = std::abs(bodies[i].position.x() - starts_[i]);
-      if (sideways > 0.5 * kUnit) collapse_ = std::max(collapse_, sideways);
+      if (sideways > kSqueezedOut) collapse_ = std::max(collapse_, sideways);
     }
   }
   double measure() const override { return std::max(penetration_.measure(), collapse_); }

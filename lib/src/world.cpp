@@ -188,9 +188,10 @@ void World::findCandidatePairs(double h) {
 // speculative.
 void World::computeSweepBounds(double h) {
   sweepBounds_.resize(bodies_.size());
+  const bool speculative = speculativeContacts();
   for (size_t i = 0; i < bodies_.size(); ++i) {
     const Body& body = bodies_[i];
-    const double reach = speculativeContacts() ? body.velocity.norm() * h : 0.0;
+    const double reach = speculative ? body.velocity.norm() * h : 0.0;
     sweepBounds_[i] = {body.bounds.lower - Vec2(reach, reach),
                        body.bounds.upper + Vec2(reach, reach)};
   }
