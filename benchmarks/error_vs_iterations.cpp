@@ -25,6 +25,7 @@
 #include "impulse2d/solvers/sequential_impulses.h"
 #include "impulse2d/world.h"
 #include "measures/benchmark_scenes.h"
+#include "measures/output_directory.h"
 
 using namespace impulse2d;
 using namespace benchmarks;
@@ -148,6 +149,13 @@ void probeScene(const Scene& scene, std::ofstream& data) {
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: error_vs_iterations OUTDIR\n");
+    return 2;
+  }
+  const std::string problem = outputDirectoryProblem(argv[1]);
+  if (!problem.empty()) {
+    std::fprintf(stderr,
+                 "error_vs_iterations: error: OUTDIR %s\nusage: error_vs_iterations OUTDIR\n",
+                 problem.c_str());
     return 2;
   }
   const std::string path = std::string(argv[1]) + "/error_vs_iterations.dat";

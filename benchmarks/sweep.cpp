@@ -19,6 +19,7 @@
 
 #include "measures/benchmark_scenes.h"
 #include "measures/measured_run.h"
+#include "measures/output_directory.h"
 #include "measures/progress_bar.h"
 #include "measures/scaling.h"
 #include "measures/sweep_points.h"
@@ -141,6 +142,12 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string outputDirectory = argv[argc - 1];
+  const std::string problem = outputDirectoryProblem(outputDirectory);
+  if (!problem.empty()) {
+    std::fprintf(stderr, "sweep: error: OUTDIR %s\nusage: sweep [--quick] OUTDIR\n",
+                 problem.c_str());
+    return 2;
+  }
   const auto start = std::chrono::steady_clock::now();
   const Grid grid = sweepGrid(quick);
   std::vector<SweepPoint> points = sweepPoints(grid);
@@ -150,9 +157,14 @@ int main(int argc, char** argv) {
   runSweep(points, grid.pointBudget, progress);
   measureScaling(scaling, progress);
   markParetoFront(points);
-  writeSweepCsv(outputDirectory + "/sweep.csv", points);
-  writeParetoCsv(outputDirectory + "/pareto.csv", points);
-  writeScalingCsv(outputDirectory + "/scaling.csv", scaling);
+  try {
+    writeSweepCsv(outputDirectory + "/sweep.csv", points);
+    writeParetoCsv(outputDirectory + "/pareto.csv", points);
+    writeScalingCsv(outputDirectory + "/scaling.csv", scaling);
+  } catch (const std::runtime_error& failure) {
+    std::fprintf(stderr, "sweep: error: %s\n", failure.what());
+    return 1;
+  }
   const double minutes =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.0;
   printSweepTables(points, minutes);
