@@ -479,7 +479,8 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     probeOf<DisplacementProbe>(kSkinStep),
                     {},
                     {},
-                    {"soft step, 16 substeps at 240 Hz", "soft step + load-scaled stiffness"}});
+                    {"soft step, 16 substeps at 240 Hz", "soft step + load-scaled stiffness",
+                     "micro − pair moves"}});
   scenes.push_back({"circle_stack",
                     "Tall stack of circles",
                     {"balls", "", 2, 40, KnobScale::Integer},
@@ -497,7 +498,7 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     probeOf<DisplacementProbe>(kSkinStep),
                     {},
                     {},
-                    {}});
+                    {"micro − pair moves"}});
   scenes.push_back({"heavy_on_light",
                     "Heavy box on light ones",
                     ratio,
@@ -512,7 +513,7 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     {},
                     {},
                     {"sequential + 4 substeps", "soft step, 16 substeps at 240 Hz",
-                     "soft step + load-scaled stiffness"}});
+                     "soft step + load-scaled stiffness", "micro − pair moves"}});
   scenes.push_back({"heavy_pyramid",
                     "Pyramid topped by a heavy box",
                     ratio,

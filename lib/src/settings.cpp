@@ -21,6 +21,7 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.impulseTotals = false;
   settings.severityCountsPushedPoints = false;
   settings.warmStart = false;
+  settings.pairMoves = false;
   return settings;
 }
 
@@ -38,7 +39,9 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"speculative_gaps", &s.speculativeGaps},
           {"impulse_totals", &s.impulseTotals},
           {"severity_counts_pushed_points", &s.severityCountsPushedPoints},
-          {"warm_start", &s.warmStart}};
+          {"warm_start", &s.warmStart},
+          {"pair_moves", &s.pairMoves},
+          {"pair_condition_limit", &s.pairConditionLimit}};
 }
 
 namespace {

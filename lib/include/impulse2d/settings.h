@@ -83,6 +83,14 @@ struct MicroCollisionSettings {
   /// matched by feature id, so resting weight does not have to pass down a stack one impulse at
   /// a time every step (667 M → 4.5 M instructions per step on pyramid20). Off: zero totals.
   bool warmStart = true;
+  /// Pair moves: the deepest point of a two-point manifold is resolved together with the other
+  /// point, both penetrations removed by one move of each body (the 2×2 block solve on
+  /// penetrations, as the position pass of sequential impulses does), so resolving one corner
+  /// neither tilts the body nor drives the other corner deeper. Off: one point at a time.
+  bool pairMoves = true;
+  /// A pair is moved together only when its coupling matrix K is this well conditioned
+  /// (k₀₀² < limit · det K, Box2D 2.4's test); a narrower pair is resolved one point at a time.
+  double pairConditionLimit = 1000.0;
 
   /// The plain method of the lecture: every refinement above off.
   static MicroCollisionSettings lecture();

@@ -6,9 +6,12 @@
 #include "impulse2d/solvers/micro_collision.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
 
 #include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/two_point_block.h"
 
 namespace impulse2d {
 namespace {
@@ -362,12 +365,91 @@ int MicroCollisionSolver::worstPenetration() const {
   return queue_.empty() ? -1 : queue_.worst();
 }
 
+// The deepest point, with the other point of its manifold when pair moves are on and the pair
+// can be moved together; alone otherwise, as the lecture does.
 void MicroCollisionSolver::resolvePenetration(const StepContext& context, int index,
                                               int iteration) {
+  const int partner = pairPartner(index);
+  if (partner >= 0 && resolvePair(context, index, partner, iteration)) return;
+  resolvePoint(context, index, iteration);
+}
+
+// The contact point now: midway between the anchors on the two surfaces at the current poses.
+Vec2 MicroCollisionSolver::contactPointNow(const PointState& state) const {
+  return 0.5 *
+         (poses_[state.bodyA].toWorld(state.anchorA) + poses_[state.bodyB].toWorld(state.anchorB));
+}
+
+// The other point of the manifold of states_[index], or −1 (one-point manifold, or pair moves
+// off). prepare lists a manifold's points one after the other.
+int MicroCollisionSolver::pairPartner(int index) const {
+  if (!settings_.pairMoves) return -1;
+  const int manifold = states_[index].manifold;
+  for (const int other : {index - 1, index + 1}) {
+    if (other >= 0 && other < int(states_.size()) && states_[other].manifold == manifold) {
+      return other;
+    }
+  }
+  return -1;
+}
+
+// Both points of a two-point manifold in one move. Moving the bodies by position impulses x
+// (x along +n to B, −n to A, each body shifted by x/m and turned by x(r × n)/I, as a single
+// point's move splits itself) changes the penetrations by −K x, K the pair's coupling matrix at
+// the poses now; x ≥ 0 leaves neither point penetrating and pushes only where one touches (the
+// 2×2 complementarity problem of two_point_block.h). False, moving nothing, when K is too
+// ill-conditioned or a turn would pass the angular move limit: the point is then resolved alone.
+bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, int partner,
+                                       int iteration) {
+  const std::array<const PointState*, 2> states = {&states_[index], &states_[partner]};
+  Pose& a = poses_[states[0]->bodyA];
+  Pose& b = poses_[states[0]->bodyB];
+  const Vec2 normal = states[0]->normal;
+  std::array<double, 2> torqueArmA{};
+  std::array<double, 2> torqueArmB{};
+  for (int i = 0; i < 2; ++i) {
+    const Vec2 point = contactPointNow(*states[i]);
+    torqueArmA[i] = cross(Vec2(point - a.position), normal);
+    torqueArmB[i] = cross(Vec2(point - b.position), normal);
+  }
+  Mat2 k;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      k(i, j) = a.inverseMass + b.inverseMass + a.inverseInertia * torqueArmA[i] * torqueArmA[j] +
+                b.inverseInertia * torqueArmB[i] * torqueArmB[j];
+    }
+  }
+  if (!isWellConditioned(k, settings_.pairConditionLimit)) return false;
+  const Vec2 x = solveTwoPointLcp(k, Vec2(-states[0]->penetration, -states[1]->penetration));
+  const double turnA = -a.inverseInertia * (torqueArmA[0] * x(0) + torqueArmA[1] * x(1));
+  const double turnB = b.inverseInertia * (torqueArmB[0] * x(0) + torqueArmB[1] * x(1));
+  if (std::max(std::abs(turnA), std::abs(turnB)) > settings_.angularMoveLimit) return false;
+  const std::array<double, 2> removed = {states[0]->penetration, states[1]->penetration};
+  for (auto [pose, sign, turn] : {std::tuple{&a, -1.0, turnA}, std::tuple{&b, 1.0, turnB}}) {
+    if (!pose->movable) continue;
+    pose->position += sign * pose->inverseMass * (x(0) + x(1)) * normal;
+    pose->turnBy(turn);
+    pose->moved = true;
+  }
+  refreshPenetrations(states[0]->bodyA);
+  refreshPenetrations(states[0]->bodyB);
+  if (context.observer) {  // a traced step shows the bodies as this move left them
+    storePose(context, states[0]->bodyA);
+    storePose(context, states[0]->bodyB);
+  }
+  for (int i = 0; i < 2; ++i) {
+    context.report({SolverEvent::Phase::Position, iteration, states[i]->manifold, states[i]->point,
+                    removed[i], 0.0, 0.0});
+  }
+  return true;
+}
+
+// One point alone: Millington's move.
+void MicroCollisionSolver::resolvePoint(const StepContext& context, int index, int iteration) {
   const PointState& state = states_[index];
   Pose& a = poses_[state.bodyA];
   Pose& b = poses_[state.bodyB];
-  const Vec2 point = 0.5 * (a.toWorld(state.anchorA) + b.toWorld(state.anchorB));
+  const Vec2 point = contactPointNow(state);
   const Vec2 armA = point - a.position;
   const Vec2 armB = point - b.position;
   const double torqueArmA = cross(armA, state.normal);
@@ -405,11 +487,8 @@ void MicroCollisionSolver::moveBody(Pose& body, const Vec2& arm, const Vec2& dir
     linearMove = totalMove - angularMove;
   }
   body.position += linearMove * direction;
-  if (angularInertia > 0.0) {
-    body.angle += body.inverseInertia * torqueArm * angularMove / angularInertia;
-    body.cosine = std::cos(body.angle);
-    body.sine = std::sin(body.angle);
-  }
+  if (angularInertia > 0.0)
+    body.turnBy(body.inverseInertia * torqueArm * angularMove / angularInertia);
   body.moved = true;
 }
 

@@ -3,6 +3,7 @@
 // resolved worst first by moving the bodies apart.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "impulse2d/solver.h"
@@ -34,6 +35,11 @@ class MicroCollisionSolver : public ContactSolver {
     bool movable = false;  ///< not static
     bool moved = false;    ///< since the body last got its pose
     Vec2 toWorld(const Vec2& local) const { return position + rotate(cosine, sine, local); }
+    void turnBy(double turn) {
+      angle += turn;
+      cosine = std::cos(angle);
+      sine = std::sin(angle);
+    }
   };
   struct PointState {
     // What the penetration phase reads, together ...
@@ -81,6 +87,10 @@ class MicroCollisionSolver : public ContactSolver {
 
   int worstPenetration() const;
   void resolvePenetration(const StepContext& context, int index, int iteration);
+  void resolvePoint(const StepContext& context, int index, int iteration);
+  int pairPartner(int index) const;
+  bool resolvePair(const StepContext& context, int index, int partner, int iteration);
+  Vec2 contactPointNow(const PointState& state) const;
   void loadPoses(const StepContext& context);
   void storePoses(const StepContext& context);
   void storePose(const StepContext& context, int body);
