@@ -51,9 +51,9 @@ std::vector<Method> extraMethods() {
       // Springs per carried mass: little sag, but one sweep per substep loses the softness that
       // kept it steady under a mass ratio (docs/soft-step.md).
       {"soft step + load-scaled stiffness", "soft_step", {"solver.load_scaled_stiffness=true"}},
-      // Both corners of a flat contact moved together in the penetration phase; off, one corner
+      // The two points of a flat contact resolved together, impulses and moves; off, one point
       // at a time as the lecture does (docs/micro-collisions.md).
-      {"micro − pair moves", "micro", {"solver.pair_moves=false"}},
+      {"micro − pairs", "micro", {"solver.pair_impulses=false", "solver.pair_moves=false"}},
       {"micro − both bounce fixes",
        "micro",
        {"solver.remove_acceleration_velocity=false", "solver.lower_restitution_at_low_speed=false",

@@ -480,7 +480,7 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     {},
                     {},
                     {"soft step, 16 substeps at 240 Hz", "soft step + load-scaled stiffness",
-                     "micro − pair moves"}});
+                     "micro − pairs"}});
   scenes.push_back({"circle_stack",
                     "Tall stack of circles",
                     {"balls", "", 2, 40, KnobScale::Integer},
@@ -498,7 +498,7 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     probeOf<DisplacementProbe>(kSkinStep),
                     {},
                     {},
-                    {"micro − pair moves"}});
+                    {"micro − pairs"}});
   scenes.push_back({"heavy_on_light",
                     "Heavy box on light ones",
                     ratio,
@@ -513,7 +513,7 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     {},
                     {},
                     {"sequential + 4 substeps", "soft step, 16 substeps at 240 Hz",
-                     "soft step + load-scaled stiffness", "micro − pair moves"}});
+                     "soft step + load-scaled stiffness", "micro − pairs"}});
   scenes.push_back({"heavy_pyramid",
                     "Pyramid topped by a heavy box",
                     ratio,

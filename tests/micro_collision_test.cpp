@@ -13,6 +13,8 @@ using namespace impulse2d;
 
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 /// Records every solver event of a step.
 struct EventLog : SolverObserver {
   std::vector<SolverEvent> events;
@@ -120,4 +122,40 @@ TEST_CASE("pair moves lift a box sunk flat into the ground out level, in one mov
        << singleMovesTaken << " moves, left at angle " << turned.angle << " rad");
   CHECK(singleMovesTaken > 2);
   CHECK(std::abs(turned.angle) > 1e-9);
+}
+
+TEST_CASE("a pair impulse stops a box on a slope that holds it, in one micro-collision",
+          "[micro][friction][pair-impulses]") {
+  // A unit box placed at rest on a 20° slope with μ 0.5 > tan 20°. After gravity's update both
+  // corners close and the face slips; the pair's contact matrix turns the three wanted changes
+  // (both normals, the one slip) into impulses that stop the box, within the friction cone. One
+  // corner at a time, each impulse turns the box and the other corner needs more.
+  const double angle = 20.0 * kPi / 180.0;
+  Scene scene = lecture::sceneWith("micro", 1.0 / 60.0);
+  scene.bodies.push_back(lecture::ground(0.5, angle));
+  scene.bodies.push_back(lecture::boxOnSlope(Vec2(1.0, 1.0), angle, 0.5));
+  const auto firstStep = [&](bool pairImpulses) {
+    scene.solverSettings.micro.pairImpulses = pairImpulses;
+    auto world = buildWorld(scene);
+    EventLog log;
+    world->setObserver(&log);
+    world->step();
+    int impulses = 0;
+    for (const SolverEvent& event : log.events) {
+      if (event.phase == SolverEvent::Phase::Velocity) {
+        impulses = std::max(impulses, event.iteration + 1);
+      }
+    }
+    return std::pair{impulses, world->bodies()[1]};
+  };
+  const auto [pairImpulsesTaken, stopped] = firstStep(true);
+  CHECK(pairImpulsesTaken == 1);
+  CHECK(stopped.velocity.norm() < 1e-12);
+  CHECK(std::abs(stopped.angularVelocity) < 1e-12);
+  const auto [singleImpulsesTaken, rocked] = firstStep(false);
+  WARN("figure: box at rest on 20°, one corner at a time: "
+       << singleImpulsesTaken << " impulses in the first step, leaving " << rocked.velocity.norm()
+       << " m/s");
+  CHECK(singleImpulsesTaken > 2);
+  CHECK(rocked.velocity.norm() > stopped.velocity.norm());
 }

@@ -46,10 +46,10 @@ void checkBreaksBetween(const std::string& scene, const std::string& method, dou
 
 TEST_CASE("a stack of boxes stands up to the documented height", "[stability][stack]") {
   CHECK(holds("box_stack", "sequential", 40));
-  // Micro's penetration phase stands 40 boxes when it moves both corners of a flat contact
-  // together, 31 when it moves one corner at a time (docs/micro-collisions.md).
+  // Micro stands 40 boxes when it resolves both corners of a flat contact together (impulses and
+  // moves), 31 one corner at a time as the lecture does (docs/micro-collisions.md).
   CHECK(holds("box_stack", "micro", 40));
-  checkBreaksBetween("box_stack", "micro − pair moves", 31, 32);
+  checkBreaksBetween("box_stack", "micro − pairs", 31, 32);
   checkBreaksBetween("box_stack", "box2d", 27, 28);
   SECTION("warm starting and accumulation are what let sequential impulses hold a tall stack") {
     checkBreaksBetween("box_stack", "sequential − warm starting", 32, 33);
@@ -77,12 +77,13 @@ TEST_CASE(
   CHECK(holds("heavy_on_light", "sequential", 88));
   CHECK(fails("heavy_on_light", "sequential", 133));
   CHECK(holds("heavy_on_light", "sequential + 4 substeps", 60));
-  // Micro's penetration moves keep the overlap small. Moving one corner at a time, they hold to a
-  // few hundred before the light boxes are squeezed sideways and fail by 500; moving both
-  // corners of a flat contact together, they hold to the end of the search (docs/stability.md).
+  // Micro's penetration moves keep the overlap small. One corner at a time, as the lecture
+  // resolves contacts, it holds to a few hundred before the light boxes are squeezed sideways and
+  // fails by 500; resolving both corners of a flat contact together, it holds to the end of the
+  // search (docs/stability.md).
   CHECK(holds("heavy_on_light", "micro", 1000));
-  CHECK(holds("heavy_on_light", "micro − pair moves", 250));
-  CHECK(fails("heavy_on_light", "micro − pair moves", 500));
+  CHECK(holds("heavy_on_light", "micro − pairs", 250));
+  CHECK(fails("heavy_on_light", "micro − pairs", 500));
   // A stack whose light boxes were squeezed out has no deep contact left: the figure is then how
   // far they went sideways. Without friction nothing holds them under a heavy box.
   CHECK(holds("heavy_on_light", "micro − friction", 50));

@@ -21,6 +21,7 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.impulseTotals = false;
   settings.severityCountsPushedPoints = false;
   settings.warmStart = false;
+  settings.pairImpulses = false;
   settings.pairMoves = false;
   return settings;
 }
@@ -40,6 +41,7 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"impulse_totals", &s.impulseTotals},
           {"severity_counts_pushed_points", &s.severityCountsPushedPoints},
           {"warm_start", &s.warmStart},
+          {"pair_impulses", &s.pairImpulses},
           {"pair_moves", &s.pairMoves},
           {"pair_condition_limit", &s.pairConditionLimit}};
 }

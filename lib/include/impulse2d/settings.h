@@ -83,6 +83,11 @@ struct MicroCollisionSettings {
   /// matched by feature id, so resting weight does not have to pass down a stack one impulse at
   /// a time every step (667 M → 4.5 M instructions per step on pyramid20). Off: zero totals.
   bool warmStart = true;
+  /// Pair impulses: the worst point of a two-point manifold, when both its points touch and the
+  /// impulse that stops both (normal and slip, through the 4×4 contact matrix of the pair) keeps
+  /// both inside the friction cone, is resolved with its other point in one micro-collision, so a
+  /// box's two corners do not rock each other. Otherwise, and when it would bounce, one point.
+  bool pairImpulses = true;
   /// Pair moves: the deepest point of a two-point manifold is resolved together with the other
   /// point, both penetrations removed by one move of each body (the 2×2 block solve on
   /// penetrations, as the position pass of sequential impulses does), so resolving one corner

@@ -62,7 +62,54 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
     }
   }
   for (PointState& state : states_) state.contactVelocity = contactVelocityNow(state);
+  preparePairs();
   indexContactsByBody(context);
+}
+
+// With pair impulses, every two-point manifold is a pair; its contact matrix
+// (invertPairContactMatrix) is inverted the first time the pair is tried in a step.
+void MicroCollisionSolver::preparePairs() {
+  pairs_.clear();
+  if (!settings_.pairImpulses || !settings_.impulseTotals) return;
+  for (int first = 0; first + 1 < int(states_.size()); ++first) {
+    if (states_[first].manifold != states_[first + 1].manifold) continue;
+    states_[first].pair = states_[first + 1].pair = int(pairs_.size());
+    pairs_.push_back({first, PointPair::Status::NotInverted, Eigen::Matrix3d::Zero()});
+  }
+}
+
+// The lecture's contact matrix for the two points of a flat contact. Its rows and columns are
+// the normal at the first point, the normal at the second, and the tangent: both points slip
+// alike (they lie on one face, so a turn moves them alike along it) and a friction impulse turns
+// the bodies alike wherever it acts along the face, so the two tangents are one direction.
+// Entry (i, j) is the velocity change along i per unit impulse along j. Its inverse turns the
+// wanted velocity changes into impulses. A nearly singular matrix (the points almost at one
+// place) leaves the pair to single points.
+void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
+  const PointState& p0 = states_[pair.first];
+  const PointState& p1 = states_[pair.first + 1];
+  const SolverBody& a = solverBodies_[p0.bodyA];
+  const SolverBody& b = solverBodies_[p0.bodyB];
+  const Vec2 tangent = leftPerpendicular(p0.normal);
+  const std::array<Vec2, 3> direction = {p0.normal, p0.normal, tangent};
+  const std::array<Vec2, 3> armA = {p0.armA, p1.armA, 0.5 * (p0.armA + p1.armA)};
+  const std::array<Vec2, 3> armB = {p0.armB, p1.armB, 0.5 * (p0.armB + p1.armB)};
+  Eigen::Matrix3d k;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      k(i, j) = (a.inverseMass + b.inverseMass) * direction[i].dot(direction[j]) +
+                a.inverseInertia * cross(armA[i], direction[i]) * cross(armA[j], direction[j]) +
+                b.inverseInertia * cross(armB[i], direction[i]) * cross(armB[j], direction[j]);
+    }
+  }
+  // Hadamard's ratio: det K against the product of its diagonal (1 for a diagonal K).
+  const double diagonal = k(0, 0) * k(1, 1) * k(2, 2);
+  if (!(diagonal > 0.0) || k.determinant() < diagonal / settings_.pairConditionLimit) {
+    pair.status = PointPair::Status::Singular;
+    return;
+  }
+  pair.inverseContactMatrix = k.inverse();
+  pair.status = PointPair::Status::Inverted;
 }
 
 // The velocity phase works on copies of what its impulses touch, one per body (static bodies
@@ -209,13 +256,18 @@ double MicroCollisionSolver::targetNormalVelocity(const PointState& state) const
 // nor take its bounce back.
 Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
-  const bool gapCloses = settings_.speculativeGaps && separatingVelocity * dt_ < state.penetration;
-  const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
-  double normalChange = state.penetration >= 0.0 || gapCloses || pressed
-                            ? targetNormalVelocity(state) - separatingVelocity
-                            : 0.0;
+  double normalChange = engaged(state) ? targetNormalVelocity(state) - separatingVelocity : 0.0;
   if (state.bounced) normalChange = std::max(0.0, normalChange);
   return Vec2(normalChange, -tangentPart(state.contactVelocity));
+}
+
+// A point the normal rule applies to: it touches, or (speculative gaps) its gap would close
+// within the step, or (impulse totals) this update already pushes it.
+bool MicroCollisionSolver::engaged(const PointState& state) const {
+  const double separatingVelocity = normalPart(state.contactVelocity);
+  const bool gapCloses = settings_.speculativeGaps && separatingVelocity * dt_ < state.penetration;
+  const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
+  return state.penetration >= 0.0 || gapCloses || pressed;
 }
 
 // How badly a point needs resolving. A point not yet pushed in this update counts only its
@@ -278,6 +330,7 @@ Vec2 MicroCollisionSolver::newTotalImpulse(const PointState& state, const Vec2& 
 void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int index,
                                                int iteration) {
   PointState& state = states_[index];
+  if (state.pair >= 0 && applyPairChange(context, state, iteration)) return;
   Manifold& manifold = context.manifolds[state.manifold];
   ContactPoint& point = manifold.points[state.point];
   const Vec2 desired = desiredVelocityChange(state);
@@ -300,6 +353,63 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   }
   context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point,
                   normalPart(desired), normalPart(impulse), tangentPart(impulse)});
+}
+
+// Both points of the worst point's manifold in one micro-collision: the impulses that give both
+// points their wanted normal change and stop the face slipping, through the pair's contact
+// matrix. The friction total is shared between the points in proportion to their normal totals,
+// so each stays in its cone when the total does. Taken only when both points are engaged and
+// neither is to bounce (a bounce passes point by point, as in the cradle), and when the new
+// totals push at both points with static friction; otherwise false, and the worst point is
+// resolved alone.
+bool MicroCollisionSolver::applyPairChange(const StepContext& context, const PointState& worst,
+                                           int iteration) {
+  PointPair& pair = pairs_[worst.pair];
+  const std::array<PointState*, 2> points = {&states_[pair.first], &states_[pair.first + 1]};
+  Manifold& manifold = context.manifolds[worst.manifold];
+  if (!settings_.friction || manifold.friction <= 0.0) return false;
+  std::array<Vec2, 2> desired;
+  for (int i = 0; i < 2; ++i) {
+    const PointState& point = *points[i];
+    if (!engaged(point) || point.bounced || targetNormalVelocity(point) > 0.0) return false;
+    desired[i] = desiredVelocityChange(point);
+  }
+  if (pair.status == PointPair::Status::NotInverted) invertPairContactMatrix(pair);
+  if (pair.status == PointPair::Status::Singular) return false;
+  const Eigen::Vector3d before(
+      normalPart(points[0]->totalImpulse), normalPart(points[1]->totalImpulse),
+      tangentPart(points[0]->totalImpulse) + tangentPart(points[1]->totalImpulse));
+  const Eigen::Vector3d change(normalPart(desired[0]), normalPart(desired[1]),
+                               0.5 * (tangentPart(desired[0]) + tangentPart(desired[1])));
+  const Eigen::Vector3d after = before + pair.inverseContactMatrix * change;
+  const double normalTotal = after(0) + after(1);
+  if (after(0) <= 0.0 || after(1) <= 0.0 || std::abs(after(2)) > manifold.friction * normalTotal) {
+    return false;
+  }
+  std::array<Vec2, 2> impulses;
+  for (int i = 0; i < 2; ++i) {
+    PointState& point = *points[i];
+    const Vec2 total(after(i), after(2) * after(i) / normalTotal);
+    impulses[i] = total - point.totalImpulse;
+    point.totalImpulse = total;
+    point.friction = FrictionState::Static;
+    ContactPoint& record = manifold.points[point.point];
+    record.normalImpulse = normalPart(total);
+    record.tangentImpulse = tangentPart(total);
+    record.friction = point.friction;
+    applyImpulse(point, impulses[i]);
+  }
+  refreshContactVelocities(context, worst.bodyA);
+  refreshContactVelocities(context, worst.bodyB);
+  if (context.observer) {  // a traced step shows the bodies as this impulse left them
+    storeVelocity(context, worst.bodyA);
+    storeVelocity(context, worst.bodyB);
+  }
+  for (int i = 0; i < 2; ++i) {
+    context.report({SolverEvent::Phase::Velocity, iteration, points[i]->manifold, points[i]->point,
+                    normalPart(desired[i]), normalPart(impulses[i]), tangentPart(impulses[i])});
+  }
+  return true;
 }
 
 void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, int bodyIndex) {

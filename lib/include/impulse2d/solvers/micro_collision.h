@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/worst_first_queue.h"
@@ -63,6 +65,15 @@ class MicroCollisionSolver : public ContactSolver {
     int point = 0;
     Mat2 contactMatrix = Mat2::Zero();         ///< unit impulse -> velocity change
     Mat2 inverseContactMatrix = Mat2::Zero();  ///< velocity change -> impulse
+    int pair = -1;  ///< index into pairs_ when pair impulses may resolve it with its other point
+  };
+  /// The two points of a manifold as one micro-collision: states_[first] and states_[first + 1].
+  struct PointPair {
+    enum class Status { NotInverted, Inverted, Singular };
+    int first = 0;
+    Status status = Status::NotInverted;
+    /// (normal at the first, normal at the second, tangent) velocity changes -> impulses
+    Eigen::Matrix3d inverseContactMatrix;
   };
 
   void prepare(const StepContext& context);
@@ -78,6 +89,10 @@ class MicroCollisionSolver : public ContactSolver {
   double accelerationVelocity(const StepContext& context, const Manifold& manifold) const;
   double targetNormalVelocity(const PointState& state) const;
   Vec2 desiredVelocityChange(const PointState& state) const;
+  bool engaged(const PointState& state) const;
+  void preparePairs();
+  void invertPairContactMatrix(PointPair& pair) const;
+  bool applyPairChange(const StepContext& context, const PointState& worst, int iteration);
   double severity(const PointState& state) const;
   int worstVelocityPoint() const;
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
@@ -103,6 +118,7 @@ class MicroCollisionSolver : public ContactSolver {
   std::vector<SolverBody> solverBodies_;  ///< by body, during the velocity phase
   std::vector<Pose> poses_;               ///< by body, during the penetration phase
   std::vector<PointState> states_;
+  std::vector<PointPair> pairs_;
   std::vector<int>
       contactsOfBodyStart_;  ///< states_ of body i: contactsOfBody_[start[i], start[i+1])
   std::vector<int> contactsOfBody_;
