@@ -24,6 +24,20 @@ struct EventLog : SolverObserver {
   }
 };
 
+/// One step of `scene`: the impulses (Velocity) or moves (Position) the resolver took in it, and
+/// the box (body 1) after it.
+std::pair<int, Body> firstStep(const Scene& scene, SolverEvent::Phase phase) {
+  auto world = buildWorld(scene);
+  EventLog log;
+  world->setObserver(&log);
+  world->step();
+  int taken = 0;
+  for (const SolverEvent& event : log.events) {
+    if (event.phase == phase) taken = std::max(taken, event.iteration + 1);
+  }
+  return {taken, world->bodies()[1]};
+}
+
 }  // namespace
 
 TEST_CASE("the desired velocity change is −vs − c·(vs − vacc)", "[micro][acceleration]") {
@@ -101,23 +115,12 @@ TEST_CASE("pair moves lift a box sunk flat into the ground out level, in one mov
   scene.world.gravity = Vec2::Zero();
   scene.bodies.push_back(lecture::ground(0.5));
   scene.bodies.push_back(lecture::boxOnSlope(Vec2(1.0, 1.0), 0.0, 0.5, -0.05));
-  const auto resolve = [&](bool pairMoves) {
-    scene.solverSettings.micro.pairMoves = pairMoves;
-    auto world = buildWorld(scene);
-    EventLog log;
-    world->setObserver(&log);
-    world->step();
-    int moves = 0;
-    for (const SolverEvent& event : log.events) {
-      if (event.phase == SolverEvent::Phase::Position) moves = std::max(moves, event.iteration + 1);
-    }
-    return std::pair{moves, world->bodies()[1]};
-  };
-  const auto [pairMovesTaken, lifted] = resolve(true);
+  const auto [pairMovesTaken, lifted] = firstStep(scene, SolverEvent::Phase::Position);
   CHECK(pairMovesTaken == 1);
   CHECK(lifted.position.y() == Approx(0.5).margin(1e-12));
   CHECK(lifted.angle == Approx(0.0).margin(1e-12));
-  const auto [singleMovesTaken, turned] = resolve(false);
+  scene.solverSettings.micro.pairMoves = false;
+  const auto [singleMovesTaken, turned] = firstStep(scene, SolverEvent::Phase::Position);
   WARN("figure: box sunk 5 cm flat: one corner at a time, "
        << singleMovesTaken << " moves, left at angle " << turned.angle << " rad");
   CHECK(singleMovesTaken > 2);
@@ -134,25 +137,12 @@ TEST_CASE("a pair impulse stops a box on a slope that holds it, in one micro-col
   Scene scene = lecture::sceneWith("micro", 1.0 / 60.0);
   scene.bodies.push_back(lecture::ground(0.5, angle));
   scene.bodies.push_back(lecture::boxOnSlope(Vec2(1.0, 1.0), angle, 0.5));
-  const auto firstStep = [&](bool pairImpulses) {
-    scene.solverSettings.micro.pairImpulses = pairImpulses;
-    auto world = buildWorld(scene);
-    EventLog log;
-    world->setObserver(&log);
-    world->step();
-    int impulses = 0;
-    for (const SolverEvent& event : log.events) {
-      if (event.phase == SolverEvent::Phase::Velocity) {
-        impulses = std::max(impulses, event.iteration + 1);
-      }
-    }
-    return std::pair{impulses, world->bodies()[1]};
-  };
-  const auto [pairImpulsesTaken, stopped] = firstStep(true);
+  const auto [pairImpulsesTaken, stopped] = firstStep(scene, SolverEvent::Phase::Velocity);
   CHECK(pairImpulsesTaken == 1);
   CHECK(stopped.velocity.norm() < 1e-12);
   CHECK(std::abs(stopped.angularVelocity) < 1e-12);
-  const auto [singleImpulsesTaken, rocked] = firstStep(false);
+  scene.solverSettings.micro.pairImpulses = false;
+  const auto [singleImpulsesTaken, rocked] = firstStep(scene, SolverEvent::Phase::Velocity);
   WARN("figure: box at rest on 20°, one corner at a time: "
        << singleImpulsesTaken << " impulses in the first step, leaving " << rocked.velocity.norm()
        << " m/s");
