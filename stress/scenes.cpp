@@ -471,16 +471,16 @@ void stackScenes(std::vector<StressScene>& scenes) {
   const Criterion displacement{kDisplacementMeasure, kDisplacementLimit, kFallsByEye, true};
   const Knob boxes{"boxes", "", 2, 40, KnobScale::Integer};
   const Knob ratio{"mass ratio", "", 1, 1000, KnobScale::Logarithmic};
-  scenes.push_back({"box_stack",
-                    "Tall stack of boxes",
-                    boxes,
-                    displacement,
-                    boxStack,
-                    probeOf<DisplacementProbe>(kSkinStep),
-                    {},
-                    {},
-                    {"soft step, 16 substeps at 240 Hz", "soft step + load-scaled stiffness",
-                     "micro − pairs"}});
+  scenes.push_back(
+      {"box_stack",
+       "Tall stack of boxes",
+       boxes,
+       displacement,
+       boxStack,
+       probeOf<DisplacementProbe>(kSkinStep),
+       {},
+       {},
+       {"soft step, 16 substeps at 240 Hz", "soft step + load-scaled stiffness", "micro − pairs"}});
   scenes.push_back({"circle_stack",
                     "Tall stack of circles",
                     {"balls", "", 2, 40, KnobScale::Integer},
