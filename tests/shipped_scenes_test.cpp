@@ -74,7 +74,7 @@ TEST_CASE(
   std::set<std::string> expected = {
       "resting_box",    "pushed_box",       "jitter",       "bouncing_ball", "incline_holds",
       "incline_slides", "incline_friction", "rolling_disk", "spinning_disk", "stack",
-      "pyramid",        "cradle",           "soft_step"};
+      "pyramid",        "cradle",           "soft_step",    "heavy_on_light"};
   expected.insert(kBenchmarkScenes.begin(), kBenchmarkScenes.end());
   std::set<std::string> found;
   for (const auto& entry :
@@ -219,4 +219,13 @@ TEST_CASE("stack: ten boxes stand for the whole run", "[scenes][stacking]") {
 TEST_CASE("pyramid: ten rows stand for the whole run", "[scenes][stacking]") {
   const Scene scene = shippedScene("pyramid");
   checkStands("pyramid", 10 * scene.world.contactMargin, 0.01);
+}
+
+TEST_CASE(
+    "heavy_on_light: the column under a box 500 times heavier stands when each flat contact's "
+    "corners are resolved together",
+    "[scenes][stacking][pair-impulses][pair-moves]") {
+  // Three contacts below the heavy box, each may sink by up to the contact margin.
+  const Scene scene = shippedScene("heavy_on_light");
+  checkStands("heavy_on_light", 3 * scene.world.contactMargin, 0.01);
 }
