@@ -1,6 +1,8 @@
 // The lecture's method (lecture 3.6, after Millington ch. 14-15): resting contacts as a series of
 // micro-collisions, one impulse per contact per update, resolved worst first; then penetration
-// resolved worst first by moving the bodies apart.
+// resolved worst first by moving the bodies apart. Beyond the lecture, each a switch of
+// MicroCollisionSettings: per-update impulse totals, warm starting, and a flat contact's two
+// points resolved together (pair impulses, pair moves).
 #pragma once
 
 #include <cmath>
