@@ -225,7 +225,9 @@ TEST_CASE(
     "heavy_on_light: the column under a box 500 times heavier stands when each flat contact's "
     "corners are resolved together",
     "[scenes][stacking][pair-impulses][pair-moves]") {
-  // Three contacts below the heavy box, each may sink by up to the contact margin.
+  // Four contacts below the heavy box (the ground's and three between boxes), each may sink by
+  // up to the contact margin, 2 cm in all. One corner at a time, the boxes end 0.1–0.5 m from
+  // where they started.
   const Scene scene = shippedScene("heavy_on_light");
-  checkStands("heavy_on_light", 3 * scene.world.contactMargin, 0.01);
+  checkStands("heavy_on_light", 4 * scene.world.contactMargin, 0.01);
 }

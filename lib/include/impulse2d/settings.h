@@ -83,18 +83,20 @@ struct MicroCollisionSettings {
   /// matched by feature id, so resting weight does not have to pass down a stack one impulse at
   /// a time every step (667 M → 4.5 M instructions per step on pyramid20). Off: zero totals.
   bool warmStart = true;
-  /// Pair impulses: the worst point of a two-point manifold, when both its points touch and the
-  /// impulse that stops both (normal and slip, through the 4×4 contact matrix of the pair) keeps
-  /// both inside the friction cone, is resolved with its other point in one micro-collision, so a
-  /// box's two corners do not rock each other. Otherwise, and when it would bounce, one point.
+  /// Pair impulses: the worst point of a two-point manifold, when both its points touch and need
+  /// resolving and the impulse that stops both (both normals and the shared slip, through the
+  /// pair's 3×3 contact matrix) keeps both inside the friction cone, is resolved with its other
+  /// point in one micro-collision, so a box's two corners do not rock each other. Otherwise, and
+  /// when it would bounce, one point. Off: one point at a time.
   bool pairImpulses = true;
   /// Pair moves: the deepest point of a two-point manifold is resolved together with the other
   /// point, both penetrations removed by one move of each body (the 2×2 block solve on
   /// penetrations, as the position pass of sequential impulses does), so resolving one corner
   /// neither tilts the body nor drives the other corner deeper. Off: one point at a time.
   bool pairMoves = true;
-  /// A pair is moved together only when its coupling matrix K is this well conditioned
-  /// (k₀₀² < limit · det K, Box2D 2.4's test); a narrower pair is resolved one point at a time.
+  /// A pair is resolved together only when its matrix is this well conditioned: for a move,
+  /// k₀₀² < limit · det K (Box2D 2.4's test); for an impulse, det K > (product of K's diagonal) /
+  /// limit. A narrower pair (two points almost at one place) is resolved one point at a time.
   double pairConditionLimit = 1000.0;
 
   /// The plain method of the lecture: every refinement above off.

@@ -72,7 +72,7 @@ void MicroCollisionSolver::preparePairs() {
   pairs_.clear();
   if (!settings_.pairImpulses || !settings_.impulseTotals) return;
   for (int first = 0; first + 1 < int(states_.size()); ++first) {
-    if (states_[first].manifold != states_[first + 1].manifold) continue;
+    if (otherPoint(first) != first + 1) continue;
     states_[first].pair = states_[first + 1].pair = int(pairs_.size());
     pairs_.push_back({first, PointPair::Status::NotInverted, Eigen::Matrix3d::Zero()});
   }
@@ -82,9 +82,10 @@ void MicroCollisionSolver::preparePairs() {
 // the normal at the first point, the normal at the second, and the tangent: both points slip
 // alike (they lie on one face, so a turn moves them alike along it) and a friction impulse turns
 // the bodies alike wherever it acts along the face, so the two tangents are one direction.
-// Entry (i, j) is the velocity change along i per unit impulse along j. Its inverse turns the
-// wanted velocity changes into impulses. A nearly singular matrix (the points almost at one
-// place) leaves the pair to single points.
+// Entry (i, j) is the velocity change along i per unit impulse along j (velocityPerUnitImpulse of
+// contact_math.h summed over both bodies, written on the solver's copies of them). Its inverse
+// turns the wanted velocity changes into impulses. A nearly singular matrix (the points almost at
+// one place) leaves the pair to single points.
 void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
   const PointState& p0 = states_[pair.first];
   const PointState& p1 = states_[pair.first + 1];
@@ -345,14 +346,20 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   point.tangentImpulse = tangentPart(state.totalImpulse);
   point.friction = state.friction;
   applyImpulse(state, impulse);
+  afterImpulse(context, state);
+  context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point,
+                  normalPart(desired), normalPart(impulse), tangentPart(impulse)});
+}
+
+// After an impulse at a point: the contact velocities of every point sharing one of its bodies
+// (and their places in the queue), and in a traced step the bodies as the impulse left them.
+void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointState& state) {
   refreshContactVelocities(context, state.bodyA);
   refreshContactVelocities(context, state.bodyB);
-  if (context.observer) {  // a traced step shows the bodies as this impulse left them
+  if (context.observer) {
     storeVelocity(context, state.bodyA);
     storeVelocity(context, state.bodyB);
   }
-  context.report({SolverEvent::Phase::Velocity, iteration, state.manifold, state.point,
-                  normalPart(desired), normalPart(impulse), tangentPart(impulse)});
 }
 
 // Both points of the worst point's manifold in one micro-collision: the impulses that give both
@@ -373,7 +380,7 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
   for (int i = 0; i < 2; ++i) {
     const PointState& point = *points[i];
     if (!engaged(point) || point.bounced || targetNormalVelocity(point) > 0.0) return false;
-    if (severity(point) <= settings_.velocityEpsilon) return false;  // only the worst needs it
+    if (severity(point) <= settings_.velocityEpsilon) return false;  // both must need it
     desired[i] = desiredVelocityChange(point);
   }
   if (pair.status == PointPair::Status::NotInverted) invertPairContactMatrix(pair);
@@ -401,12 +408,7 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
     record.friction = point.friction;
     applyImpulse(point, impulses[i]);
   }
-  refreshContactVelocities(context, worst.bodyA);
-  refreshContactVelocities(context, worst.bodyB);
-  if (context.observer) {  // a traced step shows the bodies as this impulse left them
-    storeVelocity(context, worst.bodyA);
-    storeVelocity(context, worst.bodyB);
-  }
+  afterImpulse(context, worst);
   for (int i = 0; i < 2; ++i) {
     context.report({SolverEvent::Phase::Velocity, iteration, points[i]->manifold, points[i]->point,
                     normalPart(desired[i]), normalPart(impulses[i]), tangentPart(impulses[i])});
@@ -481,7 +483,7 @@ int MicroCollisionSolver::worstPenetration() const {
 // can be moved together; alone otherwise, as the lecture does.
 void MicroCollisionSolver::resolvePenetration(const StepContext& context, int index,
                                               int iteration) {
-  const int partner = pairPartner(index);
+  const int partner = settings_.pairMoves ? otherPoint(index) : -1;
   if (partner >= 0 && resolvePair(context, index, partner, iteration)) return;
   resolvePoint(context, index, iteration);
 }
@@ -492,10 +494,9 @@ Vec2 MicroCollisionSolver::contactPointNow(const PointState& state) const {
          (poses_[state.bodyA].toWorld(state.anchorA) + poses_[state.bodyB].toWorld(state.anchorB));
 }
 
-// The other point of the manifold of states_[index], or −1 (one-point manifold, or pair moves
-// off). prepare lists a manifold's points one after the other.
-int MicroCollisionSolver::pairPartner(int index) const {
-  if (!settings_.pairMoves) return -1;
+// The other point of the manifold of states_[index], or −1 for a one-point manifold. prepare
+// lists a manifold's points one after the other.
+int MicroCollisionSolver::otherPoint(int index) const {
   const int manifold = states_[index].manifold;
   for (const int other : {index - 1, index + 1}) {
     if (other >= 0 && other < int(states_.size()) && states_[other].manifold == manifold) {
@@ -543,17 +544,23 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
     pose->turnBy(turn);
     pose->moved = true;
   }
-  refreshPenetrations(states[0]->bodyA);
-  refreshPenetrations(states[0]->bodyB);
-  if (context.observer) {  // a traced step shows the bodies as this move left them
-    storePose(context, states[0]->bodyA);
-    storePose(context, states[0]->bodyB);
-  }
+  afterMove(context, *states[0]);
   for (int i = 0; i < 2; ++i) {
     context.report({SolverEvent::Phase::Position, iteration, states[i]->manifold, states[i]->point,
                     removed[i], 0.0, 0.0});
   }
   return true;
+}
+
+// After a move at a point: the penetrations of every point sharing one of its bodies (and their
+// places in the queue), and in a traced step the bodies as the move left them.
+void MicroCollisionSolver::afterMove(const StepContext& context, const PointState& state) {
+  refreshPenetrations(state.bodyA);
+  refreshPenetrations(state.bodyB);
+  if (context.observer) {
+    storePose(context, state.bodyA);
+    storePose(context, state.bodyB);
+  }
 }
 
 // One point alone: Millington's move.
@@ -571,12 +578,7 @@ void MicroCollisionSolver::resolvePoint(const StepContext& context, int index, i
   const double penetration = state.penetration;
   moveBody(a, armA, -state.normal, penetration, inertiaAtContact);
   moveBody(b, armB, state.normal, penetration, inertiaAtContact);
-  refreshPenetrations(state.bodyA);
-  refreshPenetrations(state.bodyB);
-  if (context.observer) {  // a traced step shows the bodies as this move left them
-    storePose(context, state.bodyA);
-    storePose(context, state.bodyB);
-  }
+  afterMove(context, state);
   context.report({SolverEvent::Phase::Position, iteration, state.manifold, state.point, penetration,
                   0.0, 0.0});
 }
@@ -599,8 +601,9 @@ void MicroCollisionSolver::moveBody(Pose& body, const Vec2& arm, const Vec2& dir
     linearMove = totalMove - angularMove;
   }
   body.position += linearMove * direction;
-  if (angularInertia > 0.0)
+  if (angularInertia > 0.0) {
     body.turnBy(body.inverseInertia * torqueArm * angularMove / angularInertia);
+  }
   body.moved = true;
 }
 

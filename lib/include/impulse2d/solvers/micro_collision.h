@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include <Eigen/Dense>
+#include <Eigen/LU>
 
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
@@ -95,6 +95,7 @@ class MicroCollisionSolver : public ContactSolver {
   void preparePairs();
   void invertPairContactMatrix(PointPair& pair) const;
   bool applyPairChange(const StepContext& context, const PointState& worst, int iteration);
+  void afterImpulse(const StepContext& context, const PointState& state);
   double severity(const PointState& state) const;
   int worstVelocityPoint() const;
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
@@ -105,7 +106,8 @@ class MicroCollisionSolver : public ContactSolver {
   int worstPenetration() const;
   void resolvePenetration(const StepContext& context, int index, int iteration);
   void resolvePoint(const StepContext& context, int index, int iteration);
-  int pairPartner(int index) const;
+  int otherPoint(int index) const;
+  void afterMove(const StepContext& context, const PointState& state);
   bool resolvePair(const StepContext& context, int index, int partner, int iteration);
   Vec2 contactPointNow(const PointState& state) const;
   void loadPoses(const StepContext& context);
