@@ -4,18 +4,18 @@
 #     speed_vs_accuracy.gp
 # The scenes and their errors are those of benchmarks/sweep.cpp (kPanels).
 set datafile separator comma
-set terminal pngcairo size 1500,600 font "sans,10"
+set terminal pngcairo size 1500,1100 font "sans,10"
 set output output
 
-scenes = "stack20 pyramid20 rain"
-errors = "'contact-force error, RMS relative (1-4 s)' 'settled drift 1-4 s (m)' 'largest penetration at rest 4-6 s (m)'"
+scenes = "stack20 pyramid20 pyramid40 rain"
+errors = "'contact-force error, RMS relative (1-4 s)' 'settled drift 1-4 s (m)' 'settled drift 1-4 s (m)' 'largest penetration at rest 4-6 s (m)'"
 methods = "micro sequential reference soft_step"
 colours = "#d95f02 #1b9e77 #7570b3 #e7298a"
 
 measured(scene) = strcol(1) eq scene && strcol(9) eq "measured"
 of(scene, method) = measured(scene) && strcol(3) eq method
 
-set multiplot layout 1,3 title "Speed against accuracy: every method x iterations or substeps (1-64) x dt (1/30-1/240 s), sleeping off" font ",12"
+set multiplot layout 2,2 title "Speed against accuracy: every method x iterations or substeps (1-64) x dt (1/30-1/240 s), sleeping off" font ",12"
 set logscale xy
 set format y "10^{%T}"
 set format x "10^{%T}"
