@@ -23,6 +23,7 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.warmStart = false;
   settings.pairImpulses = false;
   settings.pairMoves = false;
+  settings.positionEpsilon = 1e-5;
   return settings;
 }
 
