@@ -6,7 +6,7 @@ set terminal pngcairo size 900,620 font "sans,10"
 set output output
 
 methods = "micro sequential reference soft_step box2d"
-labels = "'micro (200 per contact)' 'sequential (20 iterations)' 'reference (Lemke)' 'soft step (4 substeps)' 'Box2D 2.4.1 (8+3)'"
+labels = "'micro (200 per contact)' 'sequential (≤ 40 sweeps, converged)' 'reference (active set)' 'soft step (4 substeps)' 'Box2D 2.4.1 (8+3)'"
 colours = "#d95f02 #1b9e77 #7570b3 #e7298a #000000"
 
 exponent(method) = system(sprintf("awk -F, '$1 == \"%s\" {printf \"%%.2f\", $7; exit}' %s", method, data))

@@ -30,7 +30,7 @@ do for [i = 1:words(scenes)] {
   plot for [m = 1:words(methods)] data skip 1 \
          using (of(scene, word(methods, m)) ? $7 : 1/0):8 \
          with points pointtype 7 pointsize 0.8 linecolor rgb word(colours, m) \
-         title word(methods, m), \
+         title word(methods, m) noenhanced, \
        data skip 1 using (of(scene, "box2d") ? $7 : 1/0):8 \
          with points pointtype 3 pointsize 1.6 linewidth 2 linecolor rgb "black" \
          title "Box2D 2.4.1", \
