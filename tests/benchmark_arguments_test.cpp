@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -20,7 +21,9 @@ struct Outcome {
 };
 
 Outcome runBenchmark(const std::string& program, const std::string& arguments) {
-  const std::string err = IMPULSE2D_BINARY_DIR "/benchmark_arguments_test.err";
+  // One file per process: ctest runs the test cases side by side.
+  const std::string err =
+      IMPULSE2D_BINARY_DIR "/benchmark_arguments_test." + std::to_string(getpid()) + ".err";
   const std::string command =
       IMPULSE2D_BINARY_DIR "/benchmarks/" + program + " " + arguments + " >/dev/null 2>" + err;
   const int status = std::system(command.c_str());
