@@ -91,6 +91,7 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
                                       {"lemke_island_points", &s.lemkeIslandPoints},
                                       {"lemke_fallback_points", &s.lemkeFallbackPoints},
                                       {"guess_sweeps", &s.activeSet.guessSweeps},
+                                      {"warm_states", &s.activeSet.warmStates},
                                       {"max_factorizations", &s.activeSet.maxFactorizations},
                                       {"block_failures", &s.activeSet.blockFailures},
                                       {"regularization", &s.activeSet.regularization},

@@ -47,6 +47,9 @@ struct ContactPoint {
   /// The micro-collision resolver gave this point a bounce this step. Carried to the next step
   /// by feature id, so the bounce is not warm-started as if it were resting weight.
   bool bounced = false;
+  /// Its impulses were carried over from last step's point with the same feature id: the solver
+  /// solved this point last step (a new point starts at zero impulse and false).
+  bool carried = false;
 };
 
 /// Coefficients of a contact from the two materials. The mixing rule is Box2D's, so both engines

@@ -232,6 +232,28 @@ class FlipRule {
   int failures_ = 0;
 };
 
+/// Each point's first state: with warmStates, a point solved last step takes the state of its
+/// exact impulses; the others (all of them without warmStates) the state the Gauss–Seidel
+/// sweeps from the guess give, and the sweeps run only if some point needs them.
+std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen::VectorXd& free,
+                                      const Eigen::VectorXd& diagonal,
+                                      const ActiveSetSettings& settings) {
+  const auto fromWarm = [&](const IslandPoint& point) {
+    return settings.warmStates && point.carried;
+  };
+  const bool allWarm = std::all_of(problem.points.begin(), problem.points.end(), fromWarm);
+  const Eigen::VectorXd swept =
+      allWarm ? problem.guess : gaussSeidelGuess(problem, free, diagonal, settings.guessSweeps);
+  std::vector<ContactState> states(problem.points.size());
+  for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
+    const IslandPoint& point = problem.points[static_cast<size_t>(i)];
+    const Eigen::VectorXd& impulses = fromWarm(point) ? problem.guess : swept;
+    states[static_cast<size_t>(i)] =
+        stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), point.friction);
+  }
+  return states;
+}
+
 }  // namespace
 
 ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double friction) {
@@ -247,12 +269,7 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
   const int bodyUnknowns = static_cast<int>(problem.velocity.size());
   const Eigen::VectorXd diagonal = problem.delassus.diagonal();
   const Eigen::VectorXd free = freeVelocity(problem);
-  const Eigen::VectorXd guess = gaussSeidelGuess(problem, free, diagonal, settings.guessSweeps);
-  std::vector<ContactState> states(static_cast<size_t>(count));
-  for (int i = 0; i < count; ++i) {
-    states[static_cast<size_t>(i)] = stateOfImpulses(
-        guess(2 * i), guess(2 * i + 1), problem.points[static_cast<size_t>(i)].friction);
-  }
+  std::vector<ContactState> states = guessStates(problem, free, diagonal, settings);
   Triplets bodyRows;
   addBodyRows(problem, bodyRows);
   const int size = bodyUnknowns + 2 * count;

@@ -188,6 +188,7 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
                               jacobianRow(b, point.point, axes[axis], 1.0)};
       }
       row.lastImpulse = {point.normalImpulse, point.tangentImpulse};
+      row.carried = point.carried;
       rows_.push_back(row);
     }
   }
@@ -380,6 +381,7 @@ ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
   for (size_t k = 0; k < island.size(); ++k) {
     const PointRow& row = rows_[static_cast<size_t>(island[k])];
     IslandPoint point;
+    point.carried = row.carried;
     point.targetNormalVelocity = row.targetNormalVelocity;
     point.friction = row.friction;
     point.jacobian = row.jacobian;

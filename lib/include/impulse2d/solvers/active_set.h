@@ -39,6 +39,8 @@ struct IslandPoint {
   std::array<double, 2> staticVelocity{{0.0, 0.0}};
   double targetNormalVelocity = 0.0;
   double friction = 0.0;
+  /// The guess at this point is last step's answer there (kept by feature id), not a zero.
+  bool carried = false;
 };
 
 /// One island's problem: its points, its bodies and the Delassus matrix of its points.

@@ -85,6 +85,7 @@ class ReferenceSolver : public ContactSolver {
     /// The Jacobian rows (normal, tangent) on A and B: −(d, r×d) and +(d, r×d).
     std::array<std::array<Eigen::Vector3d, 2>, 2> jacobian{};
     Eigen::Vector2d lastImpulse = Eigen::Vector2d::Zero();  ///< kept by feature id
+    bool carried = false;  ///< lastImpulse is last step's answer at this point (ContactPoint)
   };
 
   void collectPoints(const StepContext& context);
