@@ -105,3 +105,36 @@ TEST_CASE("two thin boxes lying on each other keep their anchors a penetration a
   checkAnchorsAgree(b, a, ba);
   CHECK(ab.points[0].id != ab.points[1].id);
 }
+
+TEST_CASE("two crossing slivers may take their normals from different bodies' faces",
+          "[fuzz][collide]") {
+  // Found by the collide fuzzer in CI: a 0.6 m pentagon 1 cm thick and a 7.2 m triangle 2 cm
+  // wide, both nearly upright, crossing at their ends. A's face and B's face separate them by
+  // 0.30 and 0.21 mm, within kReferenceFaceTolerance of each other, so each order keeps its first
+  // body's face, and both normals point the same way (-x): each sliver's tip pokes out of the
+  // other on the same side. Each manifold is still consistent.
+  const Body a = makeBody("a", BodyType::Dynamic,
+                          makePolygon({{0.32836302270559314, -0.005235393188804385},
+                                       {0.0048101550504930108, 0.0047646068202814671},
+                                       {-0.12130618207876664, 0.0039736620003989181},
+                                       {-0.22747230649839623, 0.001725946279703623},
+                                       {-0.27937374890091721, -0.00045471514498021323}})
+                              .shape,
+                          1.0, Vec2(-4.9019607843137258, -4.9019607843137258), -1.5399963988185261);
+  const Body b = makeBody("b", BodyType::Dynamic,
+                          makePolygon({{0.012397371030366701, 2.3234811047444111},
+                                       {-0.0076795852370288541, 2.4461927428346071},
+                                       {-0.0047177857933378455, -4.7696738475790177}})
+                              .shape,
+                          1.0, Vec2(-4.9019607854980052, -9.9800857808441634), 3.1415926535897931);
+  Manifold ab;
+  Manifold ba;
+  REQUIRE(collide(a, b, 0.0, ab) >= 1);
+  REQUIRE(collide(b, a, 0.0, ba) >= 1);
+  const double deepestAb = ab.points[0].penetration;
+  const double deepestBa = ba.points[0].penetration;
+  CHECK(std::abs(deepestAb - deepestBa) <= kReferenceFaceTolerance);
+  CHECK(ab.normal.dot(ba.normal) > 0.0);
+  checkAnchorsAgree(a, b, ab);
+  checkAnchorsAgree(b, a, ba);
+}

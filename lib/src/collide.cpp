@@ -12,11 +12,6 @@
 namespace impulse2d {
 namespace {
 
-/// m. B's face becomes the reference face only when it separates the polygons by more than A's
-/// face plus this much, so a box resting flat keeps the same reference face every step instead
-/// of flip-flopping on round-off (Box2D: 0.1 × its linear slop of 0.005 m).
-constexpr double kReferenceFaceTolerance = 0.1 * 0.005;
-
 /// m. Circle centres closer than this are coincident: their direction is undefined, so the
 /// normal falls back to +y.
 constexpr double kCoincidentCentres = 1e-12;

@@ -12,4 +12,11 @@ namespace impulse2d {
 /// margin (penetration > −margin). Returns pointCount; 0 when they do not touch.
 int collide(const Body& a, const Body& b, double margin, Manifold& manifold);
 
+/// m. Between two polygons, B's face becomes the reference face only when it separates them by
+/// more than A's face plus this much, so a box resting flat keeps the same reference face every
+/// step instead of flip-flopping on round-off (Box2D: 0.1 × its linear slop of 0.005 m). Within
+/// it the order of the arguments decides, so collide(a, b) and collide(b, a) may take their
+/// normals from different bodies' faces.
+constexpr double kReferenceFaceTolerance = 0.1 * 0.005;
+
 }  // namespace impulse2d
