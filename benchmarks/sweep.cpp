@@ -108,7 +108,13 @@ void measurePoint(SweepPoint& point, const Panel& panel, double budget) {
   plan.settledTime = settledTime(scene);
   plan.timeBudget = budget;
   MeasuredRun run(scene, plan);
-  while (!run.done()) run.step();
+  try {
+    while (!run.done()) run.step();
+  } catch (const std::runtime_error& stopped) {  // a method that cannot solve a step says so
+    std::fprintf(stderr, "\n%s: %s\n", describe(point).c_str(), stopped.what());
+    point.status = kFailed;
+    return;
+  }
   const RunFigures figures = run.figures();
   point.microsecondsPerStep = figures.medianMicroseconds;
   point.error = panel.error(figures);

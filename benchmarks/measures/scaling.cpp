@@ -31,7 +31,12 @@ ScalingPoint measureSize(ScalingPoint point) {
   plan.steps = kScalingWarmup + kScalingSteps;
   plan.timeBudget = kSizeBudget;
   MeasuredRun run(withMethod(pyramidScene(point.rows), point.solver, 0), plan);
-  while (!run.done()) run.step();
+  try {
+    while (!run.done()) run.step();
+  } catch (const std::runtime_error& stopped) {  // a method that cannot solve a step says so
+    point.failure = stopped.what();
+    return point;
+  }
   const RunFigures figures = run.figures();
   point.stepsMeasured = std::max(0L, figures.stepsRun - kScalingWarmup);
   point.measured = point.stepsMeasured > 0;
@@ -111,7 +116,7 @@ void printScalingTable(const std::vector<ScalingPoint>& points) {
     for (const ScalingPoint& p : points) {
       if (p.boxes != row.boxes) continue;
       if (p.measured) std::printf(" %.0f |", p.microsecondsPerStep);
-      if (!p.measured) std::printf(" — |");
+      if (!p.measured) std::printf(p.failure.empty() ? " — |" : " failed |");
     }
   }
   std::printf("\n| fitted exponent (≥ %d boxes) |", kFitMinimumBoxes);
@@ -119,6 +124,10 @@ void printScalingTable(const std::vector<ScalingPoint>& points) {
     std::printf(" %.2f |", fittedExponent(points, solver));
   }
   std::printf("\n");
+  for (const ScalingPoint& p : points) {
+    if (!p.failure.empty())
+      std::printf("\n%s on %d boxes failed: %s\n", p.solver.c_str(), p.boxes, p.failure.c_str());
+  }
 }
 
 }  // namespace benchmarks

@@ -17,6 +17,7 @@ struct ScalingPoint {
   double microsecondsPerStep = 0.0;  ///< median after warm-up
   long stepsMeasured = 0;
   int contactPoints = 0;  ///< in the last step
+  std::string failure;    ///< why the method stopped the run, if it did (then not measured)
 };
 
 /// Every method on every pyramid of the family, in increasing size per method.

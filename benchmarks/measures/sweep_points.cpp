@@ -63,7 +63,7 @@ void printParetoFront(const std::vector<SweepPoint>& points, const std::string& 
 
 void printMostAccurate(const std::vector<SweepPoint>& points, const std::string& scene) {
   std::printf("\nEach method's most accurate point, and its points not measured (over the %s):\n\n",
-              "time budget, or dearer than one that was");
+              "time budget, dearer than one that was, or failed");
   std::printf(
       "| method | iterations | dt (s) | ms per simulated s | µs per step | error | "
       "not measured |\n| --- | --- | --- | --- | --- | --- | --- |\n");

@@ -12,6 +12,8 @@ inline const std::string kMeasured = "measured";
 inline const std::string kOverBudget = "over budget";
 /// A cheaper point of the same scene and method was over budget, so this one was not run.
 inline const std::string kSkipped = "skipped";
+/// The method could not solve a step of the run (the reference says why); not plotted.
+inline const std::string kFailed = "failed";
 
 struct SweepPoint {
   std::string scene;
