@@ -108,10 +108,9 @@ void measurePoint(SweepPoint& point, const Panel& panel, double budget) {
   plan.settledTime = settledTime(scene);
   plan.timeBudget = budget;
   MeasuredRun run(scene, plan);
-  try {
-    while (!run.done()) run.step();
-  } catch (const std::runtime_error& stopped) {  // a method that cannot solve a step says so
-    std::fprintf(stderr, "\n%s: %s\n", describe(point).c_str(), stopped.what());
+  const std::string failure = runToEnd(run);
+  if (!failure.empty()) {
+    std::fprintf(stderr, "\n%s: %s\n", describe(point).c_str(), failure.c_str());
     point.status = kFailed;
     return;
   }

@@ -156,10 +156,11 @@ void checkSwapped(const Body& a, const Body& b, const Manifold& ab, const Manifo
   }
   const double shallow = 0.5 * std::min(inradius(a.shape), inradius(b.shape));
   if (std::max(deepest(ab), deepest(ba)) > shallow) return;
-  // Both orders take the reference face from one body, and then the normal turns round, unless
-  // that body's face separates them by no more than kReferenceFaceTolerance beyond the other's:
-  // then each order keeps its first body's face, and where two slivers cross, both normals may
-  // point the same way (each sliver's tip pokes out of the other on the same side).
+  // Both orders take the reference face from one body (the same face finds the same deepest
+  // point, a difference of 0), and then the normal turns round, unless that body's face separates
+  // them by no more than kReferenceFaceTolerance beyond the other's: then each order keeps its
+  // first body's face, and where two slivers cross, both normals may point the same way (each
+  // sliver's tip pokes out of the other on the same side).
   const double difference = std::abs(deepest(ab) - deepest(ba));
   if (difference > 0.0 && difference <= impulse2d::kReferenceFaceTolerance) return;
   require(ab.normal.dot(ba.normal) < 0.0, "swapping A and B does not turn the normal round");

@@ -132,6 +132,8 @@ TEST_CASE("a resting pyramid starts each step in last step's states, not the swe
   std::cout << "figure: 8-row pyramid at rest, steps 11-60: " << warmTotal
             << " factorizations from last step's states (at most " << warmMost << " a step), "
             << sweptTotal << " from the sweeps' guess (at most " << sweptMost << ")\n";
+  // Last step's states are wrong only where the pile moved since: one round of flips, so one
+  // factorization to find them and one to solve with them.
   CHECK(warmMost <= 2);
   CHECK(warmTotal < sweptTotal);
 }

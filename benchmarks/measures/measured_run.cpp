@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "impulse2d/box2d/box2d_simulation.h"
 
@@ -133,6 +134,15 @@ void runSideBySide(std::vector<MeasuredRun>& runs) {
   while (!allDone()) {
     for (MeasuredRun& run : runs) run.step();
   }
+}
+
+std::string runToEnd(MeasuredRun& run) {
+  try {
+    while (!run.done()) run.step();
+  } catch (const std::runtime_error& stopped) {
+    return stopped.what();
+  }
+  return "";
 }
 
 }  // namespace benchmarks

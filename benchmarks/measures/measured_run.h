@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "impulse2d/scene/scene.h"
@@ -72,5 +73,9 @@ class MeasuredRun {
 
 /// Steps every run in turn, one step each, until all are done.
 void runSideBySide(std::vector<MeasuredRun>& runs);
+
+/// Steps the run until it is done. Returns why the method stopped it (a step it could not solve,
+/// as the reference reports), or an empty string when it ran to its end.
+std::string runToEnd(MeasuredRun& run);
 
 }  // namespace benchmarks

@@ -31,12 +31,8 @@ ScalingPoint measureSize(ScalingPoint point) {
   plan.steps = kScalingWarmup + kScalingSteps;
   plan.timeBudget = kSizeBudget;
   MeasuredRun run(withMethod(pyramidScene(point.rows), point.solver, 0), plan);
-  try {
-    while (!run.done()) run.step();
-  } catch (const std::runtime_error& stopped) {  // a method that cannot solve a step says so
-    point.failure = stopped.what();
-    return point;
-  }
+  point.failure = runToEnd(run);
+  if (!point.failure.empty()) return point;
   const RunFigures figures = run.figures();
   point.stepsMeasured = std::max(0L, figures.stepsRun - kScalingWarmup);
   point.measured = point.stepsMeasured > 0;

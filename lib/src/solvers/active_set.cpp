@@ -243,7 +243,7 @@ std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen:
   };
   const bool allWarm = std::all_of(problem.points.begin(), problem.points.end(), fromWarm);
   const Eigen::VectorXd swept =
-      allWarm ? problem.guess : gaussSeidelGuess(problem, free, diagonal, settings.guessSweeps);
+      allWarm ? Eigen::VectorXd() : gaussSeidelGuess(problem, free, diagonal, settings.guessSweeps);
   std::vector<ContactState> states(problem.points.size());
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
     const IslandPoint& point = problem.points[static_cast<size_t>(i)];
