@@ -26,6 +26,7 @@ void carryOverImpulses(const Manifold& previous, Manifold& manifold) {
       point.normalImpulse = previous.points[j].normalImpulse;
       point.tangentImpulse = previous.points[j].tangentImpulse;
       point.bounced = previous.points[j].bounced;
+      point.exactState = previous.points[j].exactState;
       point.carried = true;
     }
   }

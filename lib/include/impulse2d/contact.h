@@ -31,6 +31,11 @@ inline FeatureId makeFeatureId(int featureOfA, int featureOfB) {
 /// Friction state of a contact point in the last solve, for frames and tests.
 enum class FrictionState { None, Static, Dynamic };
 
+/// The state the global reference solved a contact point in (active_set.h): no impulse, held by
+/// static friction, or sliding with friction on its limit, the tangent velocity positive or
+/// negative. Unknown: the reference did not solve the point last step.
+enum class ContactState { Unknown, Separated, Sticking, SlidingPositive, SlidingNegative };
+
 struct ContactPoint {
   Vec2 point = Vec2::Zero();    ///< world point where impulses act: midway between the surfaces
   Vec2 anchorA = Vec2::Zero();  ///< the point on A's surface, in A's body frame
@@ -50,6 +55,9 @@ struct ContactPoint {
   /// Its impulses were carried over from last step's point with the same feature id: the solver
   /// solved this point last step (a new point starts at zero impulse and false).
   bool carried = false;
+  /// The reference's state of this point, carried over with the impulses: next step's active
+  /// set starts from it, so a resting pile poses the system it solved last step.
+  ContactState exactState = ContactState::Unknown;
 };
 
 /// Coefficients of a contact from the two materials. The mixing rule is Box2D's, so both engines

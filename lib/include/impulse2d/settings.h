@@ -204,8 +204,12 @@ struct ActiveSetSettings {
   /// Projected Gauss–Seidel sweeps from last step's impulses that guess each point's state
   /// (separated, sticking, sliding) before the first factorization.
   int guessSweeps = 20;
-  /// A point solved last step (its impulses carried over by feature id) starts in the state its
-  /// exact impulses put it in; only new points take the state the sweeps guess, and a pile
+  /// After guessSweeps, the sweeps go on while one still changes a point's state, up to this
+  /// many: a pile's first step starts from zero impulses, and its states settle only once the
+  /// weight has reached the bottom, about one row a sweep.
+  int maxGuessSweeps = 400;
+  /// A point solved last step (its impulses and state carried over by feature id) starts in the
+  /// state it was solved in; only new points take the state the sweeps guess, and a pile
   /// with no new point skips the sweeps. The sweeps give an unloaded point of a resting pile a
   /// little load, and the first factorization then finds it pulling: on a resting 20-row pyramid
   /// 45–95 such points a step. Off: every point's state comes from the sweeps.
@@ -215,6 +219,12 @@ struct ActiveSetSettings {
   /// Block flips in a row that do not lower the number of violated points before the method
   /// flips one point at a time (Júdice–Pires' safeguard against cycling).
   int blockFailures = 3;
+  /// A flip that does not lower the number of violated points below the best seen goes back to
+  /// the best states and flips half as many of their violators, the worst first, then a
+  /// quarter, … down to one (instead of blockFailures more block flips from where it is). From
+  /// rest a 40-row pyramid's first step falls to 9 violated points in 7 factorizations, and one
+  /// more block flip from there raises it to 316. Off: Júdice–Pires as above.
+  bool backtrack = true;
   /// Tikhonov term on each velocity row, relative to its Delassus diagonal: it makes the system
   /// of redundant contacts (a box face's two points, a pyramid) regular. The shift of the
   /// velocities it causes is taken out again by `refinements` solves centred on the last answer.
@@ -224,6 +234,16 @@ struct ActiveSetSettings {
   int refinements = 3;
   /// A condition counts as violated beyond this fraction of the island's impulse scale.
   double flipTolerance = 1e-12;
+  /// The factors of each island's last factorized system are kept, and a step's first system of
+  /// the same size is first solved by GMRES preconditioned by them (KeptFactorization): a
+  /// resting pile then needs no factorization a step. Off: every system is factorized.
+  bool keepFactors = true;
+  /// GMRES rounds on kept factors before the system is factorized after all: each costs about
+  /// 1/30 of a factorization of a 20-row pyramid's system.
+  int keptRounds = 8;
+  /// A solve on kept factors is done once the residual of A x = b is below this fraction of
+  /// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.
+  double keptTolerance = 1e-14;
 };
 
 /// The global solve of all contact impulses together: the accuracy reference.

@@ -6,6 +6,8 @@
 #include <limits>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace impulse2d {
 namespace {
@@ -50,29 +52,52 @@ void addColumn(const Sparse& delassus, int k, double delta, Eigen::VectorXd& vel
   for (Sparse::InnerIterator it(delassus, k); it; ++it) velocity(it.row()) += it.value() * delta;
 }
 
-/// Projected Gauss–Seidel sweeps from the guess: normal impulse ≥ 0, friction in the cone.
-Eigen::VectorXd gaussSeidelGuess(const IslandProblem& problem, const Eigen::VectorXd& free,
-                                 const Eigen::VectorXd& diagonal, int sweeps) {
-  const int count = static_cast<int>(problem.points.size());
+/// The guess put inside the cone: normal impulse ≥ 0, friction within μ of it.
+Eigen::VectorXd projectedGuess(const IslandProblem& problem) {
   Eigen::VectorXd impulses = problem.guess;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
     const double limit =
         problem.points[static_cast<size_t>(i)].friction * std::max(impulses(2 * i), 0.0);
     impulses(2 * i) = std::max(impulses(2 * i), 0.0);
     impulses(2 * i + 1) = std::clamp(impulses(2 * i + 1), -limit, limit);
   }
-  Eigen::VectorXd velocity = free + problem.delassus * impulses;
-  for (int sweep = 0; sweep < sweeps; ++sweep) {
-    for (int i = 0; i < count; ++i) {
-      for (int axis = 0; axis < 2; ++axis) {
-        const int k = 2 * i + axis;
-        double next = impulses(k) - velocity(k) / diagonal(k);
-        const double limit = problem.points[static_cast<size_t>(i)].friction * impulses(2 * i);
-        next = axis == 0 ? std::max(next, 0.0) : std::clamp(next, -limit, limit);
-        addColumn(problem.delassus, k, next - impulses(k), velocity);
-        impulses(k) = next;
-      }
+  return impulses;
+}
+
+/// One projected Gauss–Seidel sweep; whether it changed some point's state.
+bool gaussSeidelSweep(const IslandProblem& problem, const Eigen::VectorXd& diagonal,
+                      Eigen::VectorXd& impulses, Eigen::VectorXd& velocity) {
+  bool changed = false;
+  for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
+    const double friction = problem.points[static_cast<size_t>(i)].friction;
+    const ContactState before = stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), friction);
+    for (int axis = 0; axis < 2; ++axis) {
+      const int k = 2 * i + axis;
+      double next = impulses(k) - velocity(k) / diagonal(k);
+      const double limit = friction * impulses(2 * i);
+      next = axis == 0 ? std::max(next, 0.0) : std::clamp(next, -limit, limit);
+      addColumn(problem.delassus, k, next - impulses(k), velocity);
+      impulses(k) = next;
     }
+    changed = changed || before != stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), friction);
+  }
+  return changed;
+}
+
+/// Projected Gauss–Seidel sweeps from the guess: at least guessSweeps, then on while a sweep
+/// still changes some point's state, up to maxGuessSweeps. From zero impulses (a pile's first
+/// step) the weight reaches the bottom of a pile about one row a sweep, and the states settle
+/// only after that.
+Eigen::VectorXd gaussSeidelGuess(const IslandProblem& problem, const Eigen::VectorXd& free,
+                                 const Eigen::VectorXd& diagonal,
+                                 const ActiveSetSettings& settings) {
+  Eigen::VectorXd impulses = projectedGuess(problem);
+  Eigen::VectorXd velocity = free + problem.delassus * impulses;
+  int sweep = 0;
+  bool changed = true;
+  while (sweep < settings.maxGuessSweeps && (changed || sweep < settings.guessSweeps)) {
+    changed = gaussSeidelSweep(problem, diagonal, impulses, velocity);
+    ++sweep;
   }
   return impulses;
 }
@@ -185,23 +210,6 @@ double impulseScale(const Eigen::VectorXd& impulses, const Eigen::VectorXd& free
   return scale;
 }
 
-/// Solves the factorized system, then takes the regularization out again: each further solve
-/// centres it on the last impulses (J u + r(λ − λ_last) = target: a proximal point step, the
-/// velocity change W + r stays positive definite), reusing the factorization, so
-/// the velocity rows end exact while redundant contacts keep the split the first solve chose.
-Eigen::VectorXd solveProximal(const Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>>& lu,
-                              const Eigen::VectorXd& rhs, const Eigen::VectorXd& shift,
-                              int refinements) {
-  const int bodyUnknowns = static_cast<int>(rhs.size() - shift.size());
-  Eigen::VectorXd x = lu.solve(rhs);
-  for (int k = 0; k < refinements; ++k) {
-    Eigen::VectorXd centred = rhs;
-    centred.tail(shift.size()) += shift.cwiseProduct(x.tail(shift.size()));
-    x = lu.solve(centred);
-  }
-  return x.tail(x.size() - bodyUnknowns);
-}
-
 /// A separated point's impulses are zero by its state, but the solve leaves round-off there
 /// (1e-16 N s on a 40-row pyramid): next step's warm states would read that as a touching
 /// point, and about 50 such points a step would pull at the first factorization.
@@ -212,38 +220,73 @@ void zeroSeparated(const std::vector<ContactState>& states, Eigen::VectorXd& imp
 }
 
 /// Júdice–Pires: flip every violator while their number falls (or for a few tries after), else
-/// only the worst, until the number falls below the best seen.
+/// only the worst, until the number falls below the best seen. With backtracking, a flip that
+/// does not lower the number below the best goes back to the best states instead and flips
+/// half as many of their violators, the worst first, then a quarter, … down to one; only then
+/// one at a time from where it is.
 class FlipRule {
  public:
-  explicit FlipRule(int blockFailures) : blockFailures_(blockFailures) {}
+  explicit FlipRule(const ActiveSetSettings& settings)
+      : blockFailures_(settings.blockFailures), backtrack_(settings.backtrack) {}
 
   void apply(const std::vector<Violation>& found, std::vector<ContactState>& states) {
     const int count = static_cast<int>(found.size());
     if (count < best_) {
       best_ = count;
       failures_ = 0;
-    } else {
-      ++failures_;
-    }
-    if (failures_ <= blockFailures_) {
-      for (const Violation& v : found) states[static_cast<size_t>(v.point)] = v.next;
+      bestStates_ = states;
+      bestFound_ = found;
+      std::sort(bestFound_.begin(), bestFound_.end(),
+                [](const Violation& x, const Violation& y) { return x.amount > y.amount; });
+      flip(found, found.size(), states);
       return;
     }
-    const auto worst = std::max_element(
-        found.begin(), found.end(),
-        [](const Violation& x, const Violation& y) { return x.amount < y.amount; });
-    states[static_cast<size_t>(worst->point)] = worst->next;
+    ++failures_;
+    if (backtrack_) {
+      const size_t share = bestFound_.size() >> failures_;
+      if (share > 0) {
+        states = bestStates_;
+        flip(bestFound_, share, states);
+        return;
+      }
+    } else if (failures_ <= blockFailures_) {
+      flip(found, found.size(), states);
+      return;
+    }
+    flipWorst(found, states);
   }
 
  private:
+  static void flip(const std::vector<Violation>& found, size_t count,
+                   std::vector<ContactState>& states) {
+    for (size_t k = 0; k < count; ++k) states[static_cast<size_t>(found[k].point)] = found[k].next;
+  }
+
+  /// One at a time, the worst first; with backtracking, not the point flipped just before (on a
+  /// degenerate pile flipping it back returns to the states before: a cycle of two).
+  void flipWorst(const std::vector<Violation>& found, std::vector<ContactState>& states) {
+    const Violation* worst = nullptr;
+    for (const Violation& v : found) {
+      const bool tabu = backtrack_ && v.point == lastFlipped_ && found.size() > 1;
+      if (!tabu && (worst == nullptr || v.amount > worst->amount)) worst = &v;
+    }
+    states[static_cast<size_t>(worst->point)] = worst->next;
+    lastFlipped_ = worst->point;
+  }
+
   int blockFailures_;
+  bool backtrack_;
+  int lastFlipped_ = -1;
   int best_ = std::numeric_limits<int>::max();
   int failures_ = 0;
+  std::vector<ContactState> bestStates_;
+  std::vector<Violation> bestFound_;  ///< the best states' violators, the worst first
 };
 
-/// Each point's first state: with warmStates, a point solved last step takes the state of its
-/// exact impulses; the others (all of them without warmStates) the state the Gauss–Seidel
-/// sweeps from the guess give, and the sweeps run only if some point needs them.
+/// Each point's first state: with warmStates, a point solved last step takes the state it was
+/// solved in (or, solved by Lemke or another method, the state of its impulses); the others
+/// (all of them without warmStates) the state the Gauss–Seidel sweeps from the guess give, and
+/// the sweeps run only if some point needs them.
 std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen::VectorXd& free,
                                       const Eigen::VectorXd& diagonal,
                                       const ActiveSetSettings& settings) {
@@ -252,10 +295,14 @@ std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen:
   };
   const bool allWarm = std::all_of(problem.points.begin(), problem.points.end(), fromWarm);
   const Eigen::VectorXd swept =
-      allWarm ? Eigen::VectorXd() : gaussSeidelGuess(problem, free, diagonal, settings.guessSweeps);
+      allWarm ? Eigen::VectorXd() : gaussSeidelGuess(problem, free, diagonal, settings);
   std::vector<ContactState> states(problem.points.size());
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
     const IslandPoint& point = problem.points[static_cast<size_t>(i)];
+    if (fromWarm(point) && point.lastState != ContactState::Unknown) {
+      states[static_cast<size_t>(i)] = point.lastState;
+      continue;
+    }
     const Eigen::VectorXd& impulses = fromWarm(point) ? problem.guess : swept;
     states[static_cast<size_t>(i)] =
         stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), point.friction);
@@ -265,6 +312,125 @@ std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen:
 
 }  // namespace
 
+struct KeptFactorization::Factors {
+  Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu;
+};
+
+KeptFactorization::KeptFactorization() : factors_(std::make_unique<Factors>()) {}
+KeptFactorization::~KeptFactorization() = default;
+
+bool KeptFactorization::prepare(const Sparse& system, const Eigen::VectorXd& shift, bool reuse,
+                                const ActiveSetSettings& settings) {
+  const bool sameSize = factorsValid_ && system.rows() == system_.rows();
+  system_ = system;
+  shift_ = shift;
+  settings_ = settings;
+  fresh_ = false;
+  if (!reuse || !sameSize) return factorize();
+  Eigen::VectorXd sums = Eigen::VectorXd::Zero(system_.rows());
+  for (int c = 0; c < system_.outerSize(); ++c) {
+    for (Sparse::InnerIterator it(system_, c); it; ++it) sums(it.row()) += std::abs(it.value());
+  }
+  rowSum_ = sums.maxCoeff();
+  return true;
+}
+
+bool KeptFactorization::factorize() {
+  factors_->lu.compute(system_);
+  ++factorizations_;
+  fresh_ = factorsValid_ = factors_->lu.info() == Eigen::Success;
+  if (!fresh_) lastError_ = factors_->lu.lastErrorMessage();
+  return fresh_;
+}
+
+namespace {
+
+/// The Givens rotation (c, s) that turns (a, b) into (r, 0).
+std::pair<double, double> givens(double a, double b) {
+  const double r = std::hypot(a, b);
+  return r > 0.0 ? std::pair{a / r, b / r} : std::pair{1.0, 0.0};
+}
+
+}  // namespace
+
+/// x with A x = rhs by GMRES preconditioned on the right by the kept factors K: from x = K⁻¹rhs,
+/// the Krylov space of A K⁻¹ holds what K misses. A system whose values moved a little needs a
+/// round or two, one with k rows changed (k states flipped since K) about k + 1. False if the
+/// residual is not at round-off within keptRounds (K is too far from A).
+bool KeptFactorization::refineOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
+  const int rounds = settings_.keptRounds;
+  x = factors_->lu.solve(rhs);
+  const double tolerance =
+      settings_.keptTolerance * (rhs.cwiseAbs().maxCoeff() + rowSum_ * x.cwiseAbs().maxCoeff());
+  const Eigen::VectorXd residual = rhs - system_ * x;
+  const double beta = residual.norm();
+  if (residual.cwiseAbs().maxCoeff() <= tolerance) return true;
+  std::vector<Eigen::VectorXd> basis{residual / beta};
+  std::vector<Eigen::VectorXd> preconditioned;
+  Eigen::MatrixXd hessenberg = Eigen::MatrixXd::Zero(rounds + 1, rounds);
+  std::vector<std::pair<double, double>> rotations;
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(rounds + 1);
+  g(0) = beta;
+  for (int j = 0; j < rounds; ++j) {
+    preconditioned.push_back(factors_->lu.solve(basis[static_cast<size_t>(j)]));
+    Eigen::VectorXd w = system_ * preconditioned.back();
+    for (int i = 0; i <= j; ++i) {
+      hessenberg(i, j) = w.dot(basis[static_cast<size_t>(i)]);
+      w -= hessenberg(i, j) * basis[static_cast<size_t>(i)];
+    }
+    hessenberg(j + 1, j) = w.norm();
+    basis.push_back(w / hessenberg(j + 1, j));
+    for (int i = 0; i < j; ++i) {
+      const auto [c, s] = rotations[static_cast<size_t>(i)];
+      const double top = hessenberg(i, j);
+      hessenberg(i, j) = c * top + s * hessenberg(i + 1, j);
+      hessenberg(i + 1, j) = -s * top + c * hessenberg(i + 1, j);
+    }
+    rotations.push_back(givens(hessenberg(j, j), hessenberg(j + 1, j)));
+    const auto [c, s] = rotations.back();
+    hessenberg(j, j) = c * hessenberg(j, j) + s * hessenberg(j + 1, j);
+    hessenberg(j + 1, j) = 0.0;
+    g(j + 1) = -s * g(j);
+    g(j) = c * g(j);
+    if (std::abs(g(j + 1)) > tolerance) continue;
+    const Eigen::VectorXd y =
+        hessenberg.topLeftCorner(j + 1, j + 1).triangularView<Eigen::Upper>().solve(g.head(j + 1));
+    for (int i = 0; i <= j; ++i) x += y(i) * preconditioned[static_cast<size_t>(i)];
+    return (rhs - system_ * x).cwiseAbs().maxCoeff() <= tolerance;
+  }
+  return false;
+}
+
+/// One solve of A x = rhs, then `refinements` solves centred on the last answer
+/// (J u + r(λ − λ_last) = target: a proximal point step, the velocity change W + r stays
+/// positive definite), so the velocity rows end exact while redundant contacts keep the split
+/// the first solve chose. Each solve on the fresh factors, or by refinement on kept ones.
+bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
+  const auto solveOnce = [this](const Eigen::VectorXd& b, Eigen::VectorXd& out) {
+    if (!fresh_) return refineOnKeptFactors(b, out);
+    out = factors_->lu.solve(b);
+    return true;
+  };
+  if (!solveOnce(rhs, x)) return false;
+  for (int k = 0; k < settings_.refinements; ++k) {
+    Eigen::VectorXd centred = rhs;
+    centred.tail(shift_.size()) += shift_.cwiseProduct(x.tail(shift_.size()));
+    if (!solveOnce(centred, x)) return false;
+  }
+  return true;
+}
+
+Eigen::VectorXd KeptFactorization::solve(const Eigen::VectorXd& rhs) {
+  Eigen::VectorXd x;
+  if (!fresh_ && solveProximal(rhs, x)) {
+    ++keptSolves_;
+    return x.tail(shift_.size());
+  }
+  if (!fresh_ && !factorize()) return Eigen::VectorXd::Constant(shift_.size(), std::nan(""));
+  solveProximal(rhs, x);
+  return x.tail(shift_.size());
+}
+
 ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double friction) {
   if (!(normalImpulse > 0.0)) return ContactState::Separated;
   const double limit = friction * normalImpulse * (1.0 - 1e-9);
@@ -273,7 +439,8 @@ ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double
   return ContactState::Sticking;
 }
 
-ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSettings& settings) {
+ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSettings& settings,
+                               KeptFactorization& kept) {
   const int count = static_cast<int>(problem.points.size());
   const int bodyUnknowns = static_cast<int>(problem.velocity.size());
   const Eigen::VectorXd diagonal = problem.delassus.diagonal();
@@ -282,10 +449,19 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
   Triplets bodyRows;
   addBodyRows(problem, bodyRows);
   const int size = bodyUnknowns + 2 * count;
-  FlipRule flips(settings.blockFailures);
+  FlipRule flips(settings);
   ActiveSetAnswer answer;
-  Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu;
+  const int factorizationsBefore = kept.factorizations();
+  const int keptSolvesBefore = kept.keptSolves();
+  const auto tally = [&] {
+    answer.factorizations = kept.factorizations() - factorizationsBefore;
+    answer.keptSolves = kept.keptSolves() - keptSolvesBefore;
+  };
   std::unordered_map<std::string, int> visits;  // how often each set of states was solved
+  // Only the step's first system is solved on kept factors: after a flip, the flipped rows
+  // differ from every earlier system (a block flip changes many), and the path of the flips
+  // stays the one fresh factorizations take.
+  bool firstSystem = true;
   while (answer.factorizations < settings.maxFactorizations) {
     std::string key(states.size(), '\0');
     for (size_t i = 0; i < states.size(); ++i) key[i] = static_cast<char>(states[i]);
@@ -302,14 +478,16 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
     addPointRows(problem, states, diagonal, settings.regularization, triplets, rhs, shift);
     Sparse system(size, size);
     system.setFromTriplets(triplets.begin(), triplets.end());
-    lu.compute(system);
-    ++answer.factorizations;
-    if (lu.info() != Eigen::Success) {
+    const bool prepared =
+        kept.prepare(system, shift, firstSystem && settings.keepFactors, settings);
+    firstSystem = false;
+    if (prepared) answer.impulses = kept.solve(rhs);
+    tally();
+    if (!prepared || !answer.impulses.allFinite()) {
       answer.failure = "active set: singular system at factorization " +
-                       std::to_string(answer.factorizations) + " (" + lu.lastErrorMessage() + ")";
+                       std::to_string(answer.factorizations) + " (" + kept.lastError() + ")";
       return answer;
     }
-    answer.impulses = solveProximal(lu, rhs, shift, settings.refinements);
     zeroSeparated(states, answer.impulses);
     const Eigen::VectorXd velocity = free + problem.delassus * answer.impulses;
     const double tolerance = settings.flipTolerance * impulseScale(answer.impulses, free, diagonal);
@@ -317,6 +495,7 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
         violations(problem, states, answer.impulses, velocity, diagonal, tolerance);
     if (found.empty()) {
       answer.solved = true;
+      answer.states = states;
       return answer;
     }
     flips.apply(found, states);

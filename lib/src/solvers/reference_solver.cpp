@@ -8,6 +8,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/position_correction.h"
@@ -154,7 +155,10 @@ Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
   buildDelassus(context);
   buildFreeVelocity(context);
   Eigen::VectorXd impulses = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
-  for (const std::vector<int>& island : islands_) solveIsland(context, island, impulses);
+  int largeIslands = 0;
+  for (const std::vector<int>& island : islands_) {
+    solveIsland(context, island, largeIslands, impulses);
+  }
   report_.residual = residual(impulses);
   if (!(report_.residual <= settings_.residualTolerance)) {
     std::ostringstream reason;
@@ -189,6 +193,7 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
       }
       row.lastImpulse = {point.normalImpulse, point.tangentImpulse};
       row.carried = point.carried;
+      row.lastState = point.exactState;
       rows_.push_back(row);
     }
   }
@@ -268,18 +273,42 @@ void ReferenceSolver::groupIslands(const StepContext& context) {
   }
 }
 
+// The island's points with each manifold's two in the order of their feature ids: the clipping
+// may list a face's two points either way round from step to step (boxes side by side), and a
+// fixed order keeps the system a resting pile poses the same from step to step, as its kept
+// factors need (KeptFactorization). A manifold's points are next to each other in an island.
+std::vector<int> ReferenceSolver::inFeatureIdOrder(const StepContext& context,
+                                                   const std::vector<int>& island) const {
+  std::vector<int> ordered = island;
+  for (size_t k = 0; k + 1 < ordered.size(); ++k) {
+    const PointRow& first = rows_[static_cast<size_t>(ordered[k])];
+    const PointRow& second = rows_[static_cast<size_t>(ordered[k + 1])];
+    if (first.manifold != second.manifold) continue;
+    const Manifold& manifold = context.manifolds[static_cast<size_t>(first.manifold)];
+    const auto id = [&](const PointRow& row) {
+      return manifold.points[static_cast<size_t>(row.point)].id;
+    };
+    if (id(second) < id(first)) std::swap(ordered[k], ordered[k + 1]);
+    ++k;
+  }
+  return ordered;
+}
+
 // Small islands by Lemke; large ones by the active set, with Lemke as the fallback while the
 // island is not too large for it. A failure ends the solve with its reason.
 void ReferenceSolver::solveIsland(const StepContext& context, const std::vector<int>& island,
-                                  Eigen::VectorXd& impulses) {
+                                  int& largeIslands, Eigen::VectorXd& impulses) {
   const int points = static_cast<int>(island.size());
   std::string failure;
   if (points > settings_.lemkeIslandPoints) {
-    const ActiveSetAnswer answer = solveByActiveSet(context, island);
+    const std::vector<int> ordered = inFeatureIdOrder(context, island);
+    const ActiveSetAnswer answer = solveByActiveSet(context, ordered, largeIslands++);
     report_.iterations += answer.factorizations;
     if (answer.solved) {
       for (int k = 0; k < points; ++k) {
-        impulses.segment<2>(2 * island[static_cast<size_t>(k)]) = answer.impulses.segment<2>(2 * k);
+        const int i = ordered[static_cast<size_t>(k)];
+        impulses.segment<2>(2 * i) = answer.impulses.segment<2>(2 * k);
+        rows_[static_cast<size_t>(i)].state = answer.states[static_cast<size_t>(k)];
       }
       return;
     }
@@ -290,7 +319,11 @@ void ReferenceSolver::solveIsland(const StepContext& context, const std::vector<
   report_.iterations += solution.pivots;
   if (!solution.solved) fail(failure + solution.failure);
   const Eigen::VectorXd answer = islandImpulses(island, solution.z);
-  for (const int point : island) impulses.segment<2>(2 * point) = answer.segment<2>(2 * point);
+  for (const int point : island) {
+    impulses.segment<2>(2 * point) = answer.segment<2>(2 * point);
+    PointRow& row = rows_[static_cast<size_t>(point)];
+    row.state = stateOfImpulses(answer(2 * point), answer(2 * point + 1), row.friction);
+  }
 }
 
 /// The island's rows and columns of the Delassus matrix (islands do not couple).
@@ -373,7 +406,7 @@ Eigen::VectorXd ReferenceSolver::islandImpulses(const std::vector<int>& island,
 }
 
 ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
-                                                  const std::vector<int>& island) const {
+                                                  const std::vector<int>& island, int ordinal) {
   IslandProblem problem;
   std::vector<int> localBody(context.bodies.size(), -1);
   std::vector<int> bodies;
@@ -382,6 +415,7 @@ ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
     const PointRow& row = rows_[static_cast<size_t>(island[k])];
     IslandPoint point;
     point.carried = row.carried;
+    point.lastState = row.lastState;
     point.targetNormalVelocity = row.targetNormalVelocity;
     point.friction = row.friction;
     point.jacobian = row.jacobian;
@@ -414,7 +448,10 @@ ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
     problem.velocity.segment<3>(3 * static_cast<int>(k)) = velocityOf(body);
   }
   problem.delassus = islandDelassus(island);
-  return solveActiveSet(problem, settings_.activeSet);
+  while (static_cast<int>(keptFactors_.size()) <= ordinal) {
+    keptFactors_.push_back(std::make_unique<KeptFactorization>());
+  }
+  return solveActiveSet(problem, settings_.activeSet, *keptFactors_[static_cast<size_t>(ordinal)]);
 }
 
 // The answer is checked against the physical conditions themselves, not the LCP's bookkeeping,
@@ -481,6 +518,7 @@ void ReferenceSolver::applyImpulses(const StepContext& context,
     point.tangentImpulse = impulses(2 * i + 1);
     point.friction =
         frictionStateOf(point.normalImpulse, point.tangentImpulse, row.friction, onLimit);
+    point.exactState = row.state;
     applyContactImpulse(context.bodies, manifold, row.point, point.normalImpulse,
                         point.tangentImpulse);
     context.report({SolverEvent::Phase::Velocity, 0, row.manifold, row.point,

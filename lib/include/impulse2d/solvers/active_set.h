@@ -14,16 +14,20 @@
 // lowers the number of violated points (block pivoting, Júdice–Pires), then one at a time, the
 // worst first, until it falls again. The first guess comes from last step's impulses (kept by
 // feature id) refined by a few projected Gauss–Seidel sweeps, so a resting pile needs one or two
-// factorizations. The caller checks the answer against the physical conditions.
+// factorizations; with the factors of last step's last system kept (KeptFactorization), a pile
+// whose states did not change needs none. The caller checks the answer against the physical
+// conditions.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include "impulse2d/contact.h"
 #include "impulse2d/settings.h"
 
 namespace impulse2d {
@@ -41,6 +45,8 @@ struct IslandPoint {
   double friction = 0.0;
   /// The guess at this point is last step's answer there (kept by feature id), not a zero.
   bool carried = false;
+  /// The state last step's answer left the point in (ContactPoint::exactState), if known.
+  ContactState lastState = ContactState::Unknown;
 };
 
 /// One island's problem: its points, its bodies and the Delassus matrix of its points.
@@ -52,18 +58,68 @@ struct IslandProblem {
   Eigen::VectorXd guess;                 ///< 2 per point: the impulses to start from
 };
 
-enum class ContactState { Separated, Sticking, SlidingPositive, SlidingNegative };
-
 struct ActiveSetAnswer {
   bool solved = false;
   int factorizations = 0;
-  Eigen::VectorXd impulses;  ///< (λn, λt) per point
+  /// Solves done on the factors of an earlier system (KeptFactorization), none factorized anew.
+  int keptSolves = 0;
+  Eigen::VectorXd impulses;          ///< (λn, λt) per point
+  std::vector<ContactState> states;  ///< each point's state in the answer
   std::string failure;
 };
 
+/// The factors of the last system an island's active set factorized, kept to the next solve.
+///
+/// A resting pile poses next step the system of last step's states again, its values moved by
+/// the bodies' small motion, or with the rows of a few points changed (a point on the friction
+/// cone's edge whose sliding direction flipped). Each of its solves A x = b is then done by
+/// GMRES preconditioned by the kept factors K: K⁻¹b is already close, and the Krylov space of
+/// A K⁻¹ holds the rest in about one round per changed row, each round two triangular solves
+/// instead of a factorization. A system not solved to round-off within keptRounds (many states
+/// flipped, another island) is factorized after all; the answer is the same either way.
+class KeptFactorization {
+ public:
+  KeptFactorization();
+  ~KeptFactorization();
+  KeptFactorization(const KeptFactorization&) = delete;
+  KeptFactorization& operator=(const KeptFactorization&) = delete;
+
+  /// Makes A = system, whose last `shift.size()` rows carry the regularization `shift`, the
+  /// system solve() answers. Factorizes at once unless `reuse` and factors of a system of the
+  /// same pattern are kept. False (with lastError()) if that factorization fails.
+  bool prepare(const Eigen::SparseMatrix<double>& system, const Eigen::VectorXd& shift, bool reuse,
+               const ActiveSetSettings& settings);
+  /// The impulses (the last `shift.size()` entries) of the system with its regularization taken
+  /// out again by `refinements` proximal solves; NaN if a needed factorization fails.
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+
+  int factorizations() const { return factorizations_; }
+  int keptSolves() const { return keptSolves_; }
+  const std::string& lastError() const { return lastError_; }
+
+ private:
+  struct Factors;
+  bool factorize();
+  bool refineOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
+  bool solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
+
+  std::unique_ptr<Factors> factors_;
+  Eigen::SparseMatrix<double> system_;  ///< A, the system solve() answers
+  Eigen::VectorXd shift_;
+  ActiveSetSettings settings_;
+  double rowSum_ = 0.0;        ///< |A₀|: the largest sum of a row's magnitudes
+  bool factorsValid_ = false;  ///< the factors hold a successful factorization
+  bool fresh_ = false;         ///< the factors are system_'s own
+  int factorizations_ = 0;
+  int keptSolves_ = 0;
+  std::string lastError_;
+};
+
 /// Solves one island; `solved` false (with `failure` saying why) at the factorization limit or
-/// on a singular system.
-ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSettings& settings);
+/// on a singular system. `kept` carries the factors from one call to the next (the caller keeps
+/// one per island); it may be fresh.
+ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSettings& settings,
+                               KeptFactorization& kept);
 
 /// The state a point's impulses put it in: no push, friction on either limit, or inside it.
 ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double friction);

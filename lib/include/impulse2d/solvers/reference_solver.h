@@ -21,6 +21,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -86,17 +87,22 @@ class ReferenceSolver : public ContactSolver {
     std::array<std::array<Eigen::Vector3d, 2>, 2> jacobian{};
     Eigen::Vector2d lastImpulse = Eigen::Vector2d::Zero();  ///< kept by feature id
     bool carried = false;  ///< lastImpulse is last step's answer at this point (ContactPoint)
+    ContactState lastState = ContactState::Unknown;  ///< kept by feature id
+    ContactState state = ContactState::Unknown;      ///< this step's answer's
   };
 
   void collectPoints(const StepContext& context);
   void buildDelassus(const StepContext& context);
   void buildFreeVelocity(const StepContext& context);
   void groupIslands(const StepContext& context);
-  void solveIsland(const StepContext& context, const std::vector<int>& island,
+  /// largeIslands counts the islands given to the active set so far this step.
+  void solveIsland(const StepContext& context, const std::vector<int>& island, int& largeIslands,
                    Eigen::VectorXd& impulses);
+  std::vector<int> inFeatureIdOrder(const StepContext& context,
+                                    const std::vector<int>& island) const;
   LcpSolution solveByLemke(const std::vector<int>& island) const;
-  ActiveSetAnswer solveByActiveSet(const StepContext& context,
-                                   const std::vector<int>& island) const;
+  ActiveSetAnswer solveByActiveSet(const StepContext& context, const std::vector<int>& island,
+                                   int ordinal);
   Eigen::SparseMatrix<double> islandDelassus(const std::vector<int>& island) const;
   Eigen::VectorXd islandImpulses(const std::vector<int>& island, const Eigen::VectorXd& z) const;
   double residualOver(const std::vector<int>& points, const Eigen::VectorXd& impulses) const;
@@ -110,6 +116,10 @@ class ReferenceSolver : public ContactSolver {
   Eigen::VectorXd freeVelocity_;          ///< 2p: (vn, vt) of each point before the solve
   /// The points of each island: points joined through dynamic bodies.
   std::vector<std::vector<int>> islands_;
+  /// The active set's factors of each large island's last system, by the island's ordinal
+  /// among the large islands of the step (a changed island is found out by its size or by
+  /// refinement failing, and factorized anew).
+  std::vector<std::unique_ptr<KeptFactorization>> keptFactors_;
   SolveReport report_;
 };
 
