@@ -2,6 +2,7 @@
 // the bias added, the restitution pass gives the bounce, warm starting carries a stack.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "impulse2d/solvers/soft_step.h"
@@ -303,12 +304,13 @@ TEST_CASE("load-scaled stiffness: without the leak one sweep per substep rattles
 }
 
 TEST_CASE(
-    "a 20-box stack stands at the defaults with friction in the relax solve, and leans "
-    "over with friction in both solves",
+    "without contact recycling a 20-box stack stands with friction in the relax solve, and "
+    "leans over with friction in both solves",
     "[soft_step][stack][stability]") {
   // Friction solved while the bias pushes the overlap out works against impulses that the relax
   // solve then takes back; the column creeps sideways a little every substep and, 20 boxes
-  // high, leans over within 10 s (docs/soft-step.md).
+  // high, leans over within 10 s. With contact recycling (the default) the column stands
+  // either way (docs/soft-step.md).
   constexpr int kBoxes = 20;
   Scene scene = stackScene("soft_step", kBoxes, 0.6);
   const auto topTravel = [&] {
@@ -324,7 +326,77 @@ TEST_CASE(
   constexpr double kLeansOver = 0.5;  // m
   CHECK(topTravel() < kStands);
   scene.solverSettings.softStep.frictionInRelax = false;
+  CHECK(topTravel() < kStands);
+  scene.solverSettings.softStep.contactRecycling = false;
   CHECK(topTravel() > kLeansOver);
+  scene.solverSettings.softStep.frictionInRelax = true;
+  CHECK(topTravel() < kStands);
+}
+
+TEST_CASE(
+    "contact recycling keeps a manifold's normal and arms while the bodies move little, and "
+    "finds it anew beyond the recycle distance",
+    "[soft_step][recycling]") {
+  Scene scene = stackScene("soft_step", 1, 0.6);
+  scene.bodies[1].angle = 0.01;
+  auto world = buildWorld(scene);
+  world->findContacts();
+  const Manifold found = world->manifolds().at(0);
+  // Lifted 1 mm and turned 0.01 rad back to level: recycled, each point's overlap follows its
+  // turned arms, and the arms the solver uses stay as found.
+  Body& box = world->bodies()[1];
+  box.position.y() += 0.001;
+  box.angle = 0.0;
+  box.updateCache();
+  world->findContacts();
+  CHECK(world->lastStepStatistics().recycledManifolds == 1);
+  const Manifold& recycled = world->manifolds().at(0);
+  CHECK(recycled.normal == found.normal);
+  for (int i = 0; i < found.pointCount; ++i) {
+    const ContactPoint& before = found.points[size_t(i)];
+    const ContactPoint& after = recycled.points[size_t(i)];
+    CHECK(after.foundArmB == before.foundArmB);
+    const Vec2 turnedArm = rotation(-0.01) * before.foundArmB;
+    CHECK(after.penetration ==
+          Approx(before.penetration - 0.001 - (turnedArm - before.foundArmB).dot(found.normal))
+              .margin(1e-12));
+  }
+  // Moved 6 cm, past the recycle distance of 5 cm: found anew.
+  box.position.x() += 0.06;
+  box.updateCache();
+  world->findContacts();
+  CHECK(world->lastStepStatistics().recycledManifolds == 0);
+}
+
+TEST_CASE(
+    "a 40-box stack stands 10 s at the defaults with contact recycling, and buckles without it",
+    "[soft_step][stack][recycling][stability]") {
+  // Found anew every step, a manifold's arms turn with its boxes, and so do the Jacobians the
+  // substeps solve with: a box that leans moves its contact points under its weight, and the
+  // column's S-shaped mode grows about twofold every 0.6 s. Recycled, as Box2D v3 keeps them,
+  // the arms stay as they were found and the column only sways (docs/soft-step.md).
+  constexpr int kBoxes = 40;
+  Scene scene = stackScene("soft_step", kBoxes, 0.6);
+  const auto farthestTop = [&] {
+    auto world = buildWorld(scene);
+    double farthest = 0.0;
+    for (int step = 0; step < stepsIn(10.0); ++step) {
+      world->step();
+      farthest = std::max(farthest, std::abs(world->bodies().back().position.x()));
+    }
+    return farthest;
+  };
+  // Stands: the top stays within a fifth of a box of the axis (it sways 0.11 m at most in these
+  // 10 s, Box2D v3 3.4 cm). Falls: the top ends up more than a box width off the axis.
+  constexpr double kStands = 0.2;  // m
+  constexpr double kFalls = 1.0;   // m
+  const double recycled = farthestTop();
+  scene.solverSettings.softStep.contactRecycling = false;
+  const double foundAnew = farthestTop();
+  WARN("figure: 40-box stack, top's farthest from the axis in 10 s: recycled "
+       << recycled << " m, found anew " << foundAnew << " m");
+  CHECK(recycled < kStands);
+  CHECK(foundAnew > kFalls);
 }
 
 TEST_CASE("a 40-box stack stands with 16 substeps of 240 Hz contacts", "[soft_step][stack]") {

@@ -33,7 +33,8 @@ int noContact(Manifold& manifold) {
   return 0;
 }
 
-/// A contact point from the points on A's and B's surfaces (world): impulses act midway.
+/// A contact point from the points on A's and B's surfaces (world): impulses act midway; the
+/// arms to it from the centres are kept as found.
 ContactPoint contactPoint(const Body& a, const Body& b, const Vec2& onA, const Vec2& onB,
                           double penetration, FeatureId id) {
   ContactPoint point;
@@ -42,6 +43,9 @@ ContactPoint contactPoint(const Body& a, const Body& b, const Vec2& onA, const V
   point.anchorB = b.toLocal(onB);
   point.penetration = penetration;
   point.id = id;
+  point.foundArmA = point.point - a.position;
+  point.foundArmB = point.point - b.position;
+  point.foundPenetration = penetration;
   return point;
 }
 

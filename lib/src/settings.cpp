@@ -128,6 +128,9 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"friction_in_relax", &s.frictionInRelax},
           {"warm_starting", &s.warmStarting},
           {"speculative_contacts", &s.speculativeContacts},
+          {"contact_recycling", &s.contactRecycling},
+          {"recycle_distance", &s.recycleDistance},
+          {"recycle_largest_turn", &s.recycleLargestTurn},
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}};
 }

@@ -141,6 +141,13 @@ MassProperties computeMass(const Shape& shape, double density) {
   return {density * area, density * secondMoment};
 }
 
+double maxExtent(const Shape& shape) {
+  if (shape.type == ShapeType::Circle) return shape.radius;
+  double extent = 0.0;
+  for (const Vec2& vertex : shape.vertices) extent = std::max(extent, vertex.norm());
+  return extent;
+}
+
 Aabb computeBounds(const Shape& shape, const Vec2& position, const Mat2& rotation) {
   if (shape.type == ShapeType::Circle) {
     const Vec2 extent(shape.radius, shape.radius);

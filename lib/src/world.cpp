@@ -102,6 +102,7 @@ void World::wakeDisturbedBodies() {
 }
 
 void World::findContacts() {
+  statistics_ = StepStatistics{};
   findContacts(settings_.dt / settings_.substeps);
 }
 
@@ -114,9 +115,15 @@ void World::findContacts(double h) {
   ManifoldIterator old = previousManifolds_.cbegin();
   for (const BodyPair& pair : candidatePairs_) {
     old = keepSleepingManifolds(old, pair);
+    const bool hadManifold = old != previousManifolds_.cend() && keyOf(*old) == pair;
     Manifold manifold;
+    if (hadManifold && recycleManifold(*old, manifold)) {
+      manifolds_.push_back(manifold);
+      ++statistics_.recycledManifolds;
+      continue;
+    }
     if (!collidePair(pair, h, manifold)) continue;
-    if (old != previousManifolds_.cend() && keyOf(*old) == pair) carryOverImpulses(*old, manifold);
+    if (hadManifold) carryOverImpulses(*old, manifold);
     manifolds_.push_back(manifold);
   }
   keepSleepingManifolds(old, {int(bodies_.size()), 0});
@@ -140,8 +147,42 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   manifold.bodyA = pair.first;
   manifold.bodyB = pair.second;
   if (collide(a, b, contactDistance(a, b, h), manifold) == 0) return false;
+  manifold.found = {a.angle, b.angle, a.toLocal(b.position)};
   manifold.friction = mixFriction(a.friction, b.friction);
   manifold.restitution = mixRestitution(a.restitution, b.restitution);
+  return true;
+}
+
+// Contact recycling (Box2D v3), when the solver asks for it: while neither body has turned more
+// than the largest turn since the manifold was found, and B's centre has moved less than the
+// recycle distance in A's frame (plus what the pair's relative turn moves a point at the
+// farther-reaching dynamic body's largest extent), the manifold is kept with its normal, ids,
+// impulses and arms as found; only each point's overlap follows how far the bodies moved since,
+// the arms turned with them, as a soft step's substeps measure it.
+bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
+  const ContactRecycling limits = solver_->contactRecycling();
+  if (limits.distance <= 0.0 || old.pointCount == 0) return false;
+  const Body& a = bodies_[size_t(old.bodyA)];
+  const Body& b = bodies_[size_t(old.bodyB)];
+  const double turnA = a.angle - old.found.angleA;
+  const double turnB = b.angle - old.found.angleB;
+  if (std::abs(turnA) > limits.largestTurn || std::abs(turnB) > limits.largestTurn) return false;
+  const double reach =
+      std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
+  const double moved = (a.toLocal(b.position) - old.found.relativePosition).norm() +
+                       reach * std::abs(std::sin(turnB - turnA));
+  if (moved >= limits.distance) return false;
+  manifold = old;
+  const Mat2 turnOfA = rotation(turnA);
+  const Mat2 turnOfB = rotation(turnB);
+  for (int i = 0; i < manifold.pointCount; ++i) {
+    ContactPoint& point = manifold.points[size_t(i)];
+    const Vec2 onA = a.position + turnOfA * point.foundArmA;
+    const Vec2 onB = b.position + turnOfB * point.foundArmB;
+    point.penetration = point.foundPenetration - (onB - onA).dot(manifold.normal);
+    point.point = 0.5 * (onA + onB);
+    point.carried = true;
+  }
   return true;
 }
 

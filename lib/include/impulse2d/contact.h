@@ -42,6 +42,12 @@ struct ContactPoint {
   Vec2 anchorB = Vec2::Zero();  ///< the point on B's surface, in B's body frame
   double penetration = 0.0;     ///< m, along the normal; negative is a gap
   FeatureId id = 0;
+  /// m, world frame: the arms from A's and B's centres to `point`, and the penetration, when the
+  /// narrow phase found the point. A recycled manifold (world.h) keeps the arms as they were,
+  /// unturned, for soft step's Jacobians, and measures its overlap from them.
+  Vec2 foundArmA = Vec2::Zero();
+  Vec2 foundArmB = Vec2::Zero();
+  double foundPenetration = 0.0;
 
   /// N s. Total normal impulse the solver applied this step (the accumulated impulse of
   /// sequential impulses, which also warm-starts the next step).
@@ -65,6 +71,13 @@ struct ContactPoint {
 double mixFriction(double frictionA, double frictionB);
 double mixRestitution(double restitutionA, double restitutionB);
 
+/// Where two bodies were when the narrow phase found their manifold, for contact recycling.
+struct FoundPose {
+  double angleA = 0.0;                   ///< rad
+  double angleB = 0.0;                   ///< rad
+  Vec2 relativePosition = Vec2::Zero();  ///< m: B's centre in A's body frame
+};
+
 struct Manifold {
   int bodyA = -1;  ///< index into the world's bodies
   int bodyB = -1;
@@ -73,6 +86,7 @@ struct Manifold {
   double restitution = 0.0;      ///< mixed coefficient of restitution
   int pointCount = 0;            ///< 0, 1 or 2
   std::array<ContactPoint, 2> points;
+  FoundPose found;  ///< the bodies' pose when the points were found (recycled manifolds keep it)
 
   Vec2 tangent() const { return leftPerpendicular(normal); }
 };

@@ -52,6 +52,9 @@ CentredPolygon makePolygon(const std::vector<Vec2>& vertices);
 /// Mass and moment of inertia of the shape at the given density (kg/m^2).
 MassProperties computeMass(const Shape& shape, double density);
 
+/// m. The largest distance of a point of the shape from its centre of mass (its body origin).
+double maxExtent(const Shape& shape);
+
 /// The shape's bounding box when placed at position with the given rotation.
 Aabb computeBounds(const Shape& shape, const Vec2& position, const Mat2& rotation);
 

@@ -61,6 +61,14 @@ struct SolveReport {
   bool converged = true;
 };
 
+/// Contact recycling (Box2D v3): the world keeps a pair's manifold from step to step, its normal
+/// and arms as found and only its overlap updated, while neither body has turned more than
+/// largestTurn since it was found and B has moved less than `distance` relative to A (world.h).
+struct ContactRecycling {
+  double distance = 0.0;     ///< m; 0: every manifold is found anew each substep
+  double largestTurn = 0.0;  ///< rad
+};
+
 class ContactSolver {
  public:
   virtual ~ContactSolver() = default;
@@ -77,6 +85,9 @@ class ContactSolver {
   /// True for a method whose contacts are speculative whatever the world's speculativeContacts
   /// says (soft step, as Box2D v3: every contact is found before the surfaces meet).
   virtual bool wantsSpeculativeContacts() const { return false; }
+  /// The recycling of manifolds this method wants; none by default (soft step, as Box2D v3, keeps
+  /// them while the bodies move little).
+  virtual ContactRecycling contactRecycling() const { return {}; }
 };
 
 /// The names of the solvers this library builds, in the order they were written.

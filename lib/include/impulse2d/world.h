@@ -8,7 +8,9 @@
 //                          speculative contacts), then the narrow phase for each overlapping pair
 //                          with an awake body; a pair of sleeping or static bodies keeps its
 //                          manifold as it was. Impulses of the last step are carried over to
-//                          points with the same feature id (for warm starting).
+//                          points with the same feature id (for warm starting). With contact
+//                          recycling (ContactRecycling, soft step) a pair that moved little
+//                          since its manifold was found keeps it, only its overlap updated.
 //   3. wakeTouchedIslands  islands are the dynamic bodies joined by contacts (static bodies join
 //                          none); an island with an awake body wakes whole.
 //   4. integrateVelocities awake bodies: v += (g + F/m)·h, ω += (τ/I)·h; the linear acceleration
@@ -36,10 +38,11 @@ namespace impulse2d {
 /// What the last substep modelled, so tests and benchmarks can see that sleeping bodies cost
 /// nothing.
 struct StepStatistics {
-  int awakeBodies = 0;       ///< dynamic bodies integrated
-  int narrowPhasePairs = 0;  ///< pairs given to collide()
-  int keptManifolds = 0;     ///< manifolds of sleeping (or sleeping and static) pairs kept as is
-  int solvedManifolds = 0;   ///< manifolds given to the solver
+  int awakeBodies = 0;        ///< dynamic bodies integrated
+  int narrowPhasePairs = 0;   ///< pairs given to collide()
+  int keptManifolds = 0;      ///< manifolds of sleeping (or sleeping and static) pairs kept as is
+  int recycledManifolds = 0;  ///< manifolds kept from the last substep (contact recycling)
+  int solvedManifolds = 0;    ///< manifolds given to the solver
 };
 
 class World : public Simulation {
@@ -69,7 +72,8 @@ class World : public Simulation {
   ContactSolver& solver() { return *solver_; }
   const StepStatistics& lastStepStatistics() const { return statistics_; }
 
-  /// Step 2 alone: rebuilds the manifolds from the current positions.
+  /// Step 2 alone: rebuilds the manifolds from the current positions (recycling those the solver
+  /// lets it keep); the statistics then count this step 2 alone.
   void findContacts();
 
  private:
@@ -87,6 +91,7 @@ class World : public Simulation {
   void layOutSweep();
   ManifoldIterator keepSleepingManifolds(ManifoldIterator old, const BodyPair& before);
   bool collidePair(const BodyPair& pair, double h, Manifold& manifold);
+  bool recycleManifold(const Manifold& old, Manifold& manifold) const;
   bool speculativeContacts() const;
   double contactDistance(const Body& a, const Body& b, double h) const;
   bool involvesAwakeBody(const Manifold& manifold) const;

@@ -32,6 +32,11 @@ Softness loadedSoftness(double hertz, double dampingRatio, double h, double load
   return makeSoftness(scale * hertz, scale * dampingRatio, h);
 }
 
+ContactRecycling SoftStepSolver::contactRecycling() const {
+  if (!settings_.contactRecycling) return {};
+  return {settings_.recycleDistance, settings_.recycleLargestTurn};
+}
+
 void SoftStepSolver::solveVelocities(const StepContext& context) {
   const double h = context.dt / settings_.substeps;
   inverseSubstep_ = 1.0 / h;
@@ -69,7 +74,9 @@ void SoftStepSolver::prepareBodies(const StepContext& context, double h) {
   }
 }
 
-// Box2D v3's prepare: arms from each centre to the contact point, the normal and tangent masses,
+// Box2D v3's prepare: arms from each centre to the contact point as it was found (a recycled
+// manifold's stay as they were, unturned: the Jacobians are fixed across steps as they are
+// across substeps), the normal and tangent masses,
 // the separation base, the closing velocity for restitution, and the impulses to warm start
 // from (the manifold keeps the impulse over the step; a substep's is that over the substeps).
 void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
@@ -99,8 +106,8 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     for (int i = 0; i < manifold.pointCount; ++i) {
       const ContactPoint& point = manifold.points[size_t(i)];
       ConstraintPoint& cp = constraint.points[size_t(i)];
-      cp.armA = point.point - bodyA.position;
-      cp.armB = point.point - bodyB.position;
+      cp.armA = point.foundArmA;
+      cp.armB = point.foundArmB;
       cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(normal);
       const auto inverseMass = [&](const Vec2& d) {
         const double rA = cross(cp.armA, d);

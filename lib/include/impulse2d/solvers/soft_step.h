@@ -49,6 +49,7 @@ class SoftStepSolver : public ContactSolver {
   SolveReport lastReport() const override { return report_; }
   bool integratesBodies() const override { return true; }
   bool wantsSpeculativeContacts() const override { return settings_.speculativeContacts; }
+  ContactRecycling contactRecycling() const override;
 
   const SoftStepSettings& settings() const { return settings_; }
 
@@ -69,7 +70,7 @@ class SoftStepSolver : public ContactSolver {
   };
   /// One contact point, prepared once per step (Box2D v3's b2PrepareContactsTask).
   struct ConstraintPoint {
-    Vec2 armA = Vec2::Zero();  ///< contact point − A's centre at the step's start
+    Vec2 armA = Vec2::Zero();  ///< from A's centre to the contact point, as the point was found
     Vec2 armB = Vec2::Zero();
     /// Separation minus (armB − armA)·n: adding (cB + rB − cA − rA)·n now gives the separation.
     double baseSeparation = 0.0;
