@@ -111,7 +111,8 @@ struct MicroCollisionSettings {
   /// about 0.5 % a round, so nearly all stop at the cap as before (21 of its 360 steps pass it,
   /// for 0.8 % more impulses). Off: the cap is the lecture's plain count.
   bool passCapWhileProgressing = true;
-  /// Rounds of one impulse per point over which progress is measured.
+  /// Rounds of one impulse per point over which progress is measured (at least 1; fewer never
+  /// pass the cap).
   int progressRounds = 20;
   /// The least fraction by which the waiting total must fall over progressRounds rounds.
   double minimumProgress = 0.2;

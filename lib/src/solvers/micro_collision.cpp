@@ -68,11 +68,13 @@ void MicroCollisionSolver::recordRound() {
 // Whether the impulses may go on past the cap: the waiting total fell by at least minimumProgress
 // over the last progressRounds rounds. A pile passing its weight down from rest converges at a
 // steady rate until it is resolved; a pile hit every step (rain landing) soon creeps along
-// Gauss–Seidel's slow tail, where the impulses left would buy little.
+// Gauss–Seidel's slow tail, where the impulses left would buy little. A span of no rounds never
+// shows progress.
 bool MicroCollisionSolver::stillProgressing() const {
   const int rounds = int(waitingTotals_.size());
-  if (!settings_.passCapWhileProgressing || rounds <= settings_.progressRounds) return false;
-  const double before = waitingTotals_[rounds - 1 - settings_.progressRounds];
+  const int span = settings_.progressRounds;
+  if (!settings_.passCapWhileProgressing || span < 1 || rounds <= span) return false;
+  const double before = waitingTotals_[rounds - 1 - span];
   return waitingTotals_.back() <= (1.0 - settings_.minimumProgress) * before;
 }
 
