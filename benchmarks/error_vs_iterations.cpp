@@ -50,6 +50,7 @@ std::unique_ptr<ContactSolver> solverAt(const Variant& variant, int k, SolverSet
   settings.sequential.convergedImpulseChange = 0.0;  // exactly k sweeps
   settings.sequential.warmStarting = variant.warm;
   settings.micro.velocityIterationsPerContact = k;
+  settings.micro.passCapWhileProgressing = false;  // at most k per point, exactly the cap
   return makeSolver(variant.method, settings);
 }
 

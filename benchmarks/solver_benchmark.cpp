@@ -62,7 +62,7 @@ const std::vector<MethodRun> kPyramidMethods = {
     {"sequential 16 iterations + position pass", "sequential", 16, 0.0},
     {"sequential ≤ 40 sweeps, stop once converged (default) + position pass", "sequential", 0, 0.0},
     {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
-    {"micro 200 per contact (default)", "micro", 0, kShortRunTime},
+    {"micro ≤ 200 per contact, more while progressing (default)", "micro", 0, kShortRunTime},
     {"reference (active set)", "reference", 0, kShortRunTime},
 };
 
@@ -71,7 +71,7 @@ const std::vector<MethodRun> kStackMethods = {
     {"sequential 8", "sequential", 8, 0.0},
     {"sequential ≤ 40, converged (default)", "sequential", 0, 0.0},
     {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
-    {"micro 200 per contact (default)", "micro", 0, 0.0},
+    {"micro ≤ 200 per contact, more while progressing (default)", "micro", 0, 0.0},
     {"reference", "reference", 0, 0.0},
 };
 

@@ -70,6 +70,11 @@ Scene withMethod(Scene scene, const std::string& solver, int iterations) {
   if (iterations > 0 && solver == "sequential") {
     applySetting(scene, "solver.converged_impulse_change=0");
   }
+  // A cap of k impulses per point means at most k, as the lecture counts (the defaults go on
+  // past the cap while the impulses still make progress).
+  if (iterations > 0 && solver == "micro") {
+    applySetting(scene, "solver.pass_cap_while_progressing=false");
+  }
   return scene;
 }
 

@@ -32,7 +32,8 @@ int pyramidBoxes(int rows);
 std::string iterationKey(const std::string& solver);
 
 /// A copy of the scene running `solver` from its default settings, with `iterations` set through
-/// iterationKey (0 keeps the default).
+/// iterationKey (0 keeps the default). Iterations set are exact: sequential sweeps k times and
+/// micro applies at most k impulses per point.
 impulse2d::Scene withMethod(impulse2d::Scene scene, const std::string& solver, int iterations);
 
 }  // namespace benchmarks

@@ -23,6 +23,7 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.warmStart = false;
   settings.pairImpulses = false;
   settings.pairMoves = false;
+  settings.passCapWhileProgressing = false;
   settings.positionEpsilon = 1e-5;
   return settings;
 }
@@ -44,6 +45,10 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"warm_start", &s.warmStart},
           {"pair_impulses", &s.pairImpulses},
           {"pair_moves", &s.pairMoves},
+          {"pass_cap_while_progressing", &s.passCapWhileProgressing},
+          {"progress_rounds", &s.progressRounds},
+          {"minimum_progress", &s.minimumProgress},
+          {"velocity_iterations_per_contact_limit", &s.velocityIterationsPerContactLimit},
           {"pair_condition_limit", &s.pairConditionLimit}};
 }
 

@@ -35,18 +35,47 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   queueKeys_.clear();
   for (const PointState& state : states_) queueKeys_.push_back(severity(state));
   queue_.reset(queueKeys_, settings_.velocityEpsilon);
-  const int maxIterations = settings_.velocityIterationsPerContact * int(states_.size());
+  const int points = int(states_.size());
+  const int cap = settings_.velocityIterationsPerContact * points;
+  const int limit = settings_.passCapWhileProgressing
+                        ? std::max(cap, settings_.velocityIterationsPerContactLimit * points)
+                        : cap;
   report_ = SolveReport{};
-  while (report_.iterations < maxIterations) {
+  waitingTotals_.clear();
+  int roundEnd = points;
+  while (report_.iterations < limit) {
     const int worst = worstVelocityPoint();
     if (worst < 0) break;
     applyVelocityChange(context, worst, report_.iterations);
-    ++report_.iterations;
+    if (++report_.iterations == roundEnd) {
+      recordRound();
+      roundEnd += points;
+    }
+    if (report_.iterations >= cap && !stillProgressing()) break;
   }
   const int remaining = worstVelocityPoint();
   report_.residual = remaining < 0 ? 0.0 : severity(states_[remaining]);
   report_.converged = remaining < 0;
   storeVelocities(context);
+}
+
+// After every round of one impulse per point (with passCapWhileProgressing), the total desired
+// velocity change of the points still waiting: the queue's keys.
+void MicroCollisionSolver::recordRound() {
+  if (settings_.passCapWhileProgressing) waitingTotals_.push_back(queue_.waitingTotal());
+}
+
+// Whether the impulses may go on past the cap: the waiting total fell by at least minimumProgress
+// over the last progressRounds rounds. A pile passing its weight down from rest converges at a
+// steady rate until it is resolved; a pile hit every step (rain landing) soon creeps along
+// Gauss–Seidel's slow tail, where the impulses left would buy little. A span of no rounds never
+// shows progress.
+bool MicroCollisionSolver::stillProgressing() const {
+  const int rounds = int(waitingTotals_.size());
+  const int span = settings_.progressRounds;
+  if (!settings_.passCapWhileProgressing || span < 1 || rounds <= span) return false;
+  const double before = waitingTotals_[rounds - 1 - span];
+  return waitingTotals_.back() <= (1.0 - settings_.minimumProgress) * before;
 }
 
 void MicroCollisionSolver::prepare(const StepContext& context) {

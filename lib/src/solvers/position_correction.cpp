@@ -54,27 +54,32 @@ void report(const StepContext& context, int sweep, int manifold, int point, doub
   context.report({SolverEvent::Phase::Position, sweep, manifold, point, removed, 0.0, 0.0});
 }
 
-/// One point on its own: the positional impulse removal / K along the normal.
-void correctPoint(const StepContext& context, int manifoldIndex, int index,
+/// One point on its own: the positional impulse removal / K along the normal. Returns whether it
+/// moved the bodies.
+bool correctPoint(const StepContext& context, int manifoldIndex, int index,
                   const Correction& correction, int sweep) {
   const Manifold& manifold = context.manifolds[static_cast<size_t>(manifoldIndex)];
   Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
   Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
   const CurrentPoint point = currentPoint(a, b, manifold, index);
   const double removed = wantedRemoval(point.penetration, correction);
-  if (removed <= 0.0) return;
+  if (removed <= 0.0) return false;
   const Vec2 push =
       (removed / unitImpulseResponse(a, b, point.where, manifold.normal)) * manifold.normal;
   moveBody(a, -push, point.where);
   moveBody(b, push, point.where);
   report(context, sweep, manifoldIndex, index, removed);
+  return true;
 }
+
+/// What correcting a flat contact's two corners together did.
+enum class BlockCorrection { Moved, NothingToRemove, IllConditioned };
 
 /// Both corners of a flat contact at once, so neither is favoured: positional impulses x ≥ 0 with
 /// K x ≥ the wanted removals, complementary (the same 2×2 problem as the velocity block solve).
-/// Returns false, doing nothing, when K is too ill-conditioned to solve as a block.
-bool correctTogether(const StepContext& context, int manifoldIndex, const Correction& correction,
-                     int sweep) {
+/// Does nothing when K is too ill-conditioned to solve as a block, and says so.
+BlockCorrection correctTogether(const StepContext& context, int manifoldIndex,
+                                const Correction& correction, int sweep) {
   const Manifold& manifold = context.manifolds[static_cast<size_t>(manifoldIndex)];
   Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
   Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
@@ -82,9 +87,11 @@ bool correctTogether(const StepContext& context, int manifoldIndex, const Correc
                                            currentPoint(a, b, manifold, 1)};
   const Vec2 wanted(wantedRemoval(points[0].penetration, correction),
                     wantedRemoval(points[1].penetration, correction));
-  if (wanted(0) <= 0.0 && wanted(1) <= 0.0) return true;  // both within the slop: nothing to do
+  if (wanted(0) <= 0.0 && wanted(1) <= 0.0) return BlockCorrection::NothingToRemove;
   const Mat2 k = normalCouplingMatrix(a, b, manifold.normal, points[0].where, points[1].where);
-  if (!isWellConditioned(k, correction.block.conditionLimit)) return false;
+  if (!isWellConditioned(k, correction.block.conditionLimit)) {
+    return BlockCorrection::IllConditioned;
+  }
   const Vec2 pushes = solveTwoPointLcp(k, -wanted);
   const Vec2 removed = k * pushes;
   for (int i = 0; i < 2; ++i) {
@@ -92,22 +99,35 @@ bool correctTogether(const StepContext& context, int manifoldIndex, const Correc
     moveBody(b, pushes(i) * manifold.normal, points[static_cast<size_t>(i)].where);
     report(context, sweep, manifoldIndex, i, removed(i));
   }
-  return true;
+  return BlockCorrection::Moved;
+}
+
+/// One sweep over every contact. Returns whether it moved any body: a sweep that found every
+/// point within the slop leaves the poses as they were, so another would find the same.
+bool correctionSweep(const StepContext& context, const Correction& correction, int sweep) {
+  bool moved = false;
+  for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
+    const int points = context.manifolds[static_cast<size_t>(m)].pointCount;
+    if (correction.block.enabled && points == 2) {
+      const BlockCorrection block = correctTogether(context, m, correction, sweep);
+      moved = moved || block == BlockCorrection::Moved;
+      if (block != BlockCorrection::IllConditioned) continue;
+    }
+    for (int i = 0; i < points; ++i)
+      moved = correctPoint(context, m, i, correction, sweep) || moved;
+  }
+  return moved;
 }
 
 }  // namespace
 
+// The sweeps stop at the first that moves nothing (Box2D 2.4 stops once no contact is deeper
+// than three slops; this stop changes no result): a resting pile, all within the slop, costs one.
 void correctPositions(const StepContext& context, const PositionPassSettings& pass,
                       double allowedPenetration, const BlockSolveSettings& block) {
   const Correction correction{pass, allowedPenetration, block};
   for (int sweep = 0; sweep < pass.iterations; ++sweep) {
-    for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
-      const int points = context.manifolds[static_cast<size_t>(m)].pointCount;
-      if (block.enabled && points == 2 && correctTogether(context, m, correction, sweep)) {
-        continue;
-      }
-      for (int i = 0; i < points; ++i) correctPoint(context, m, i, correction, sweep);
-    }
+    if (!correctionSweep(context, correction, sweep)) break;
   }
 }
 

@@ -8,9 +8,12 @@ namespace impulse2d {
 void WorstFirstQueue::reset(const std::vector<double>& keys, double threshold) {
   threshold_ = threshold;
   heap_.clear();
+  waitingTotal_ = 0.0;
   slotOf_.assign(keys.size(), kOutside);
   for (int item = 0; item < int(keys.size()); ++item) {
-    if (keys[item] > threshold_) place(int(heap_.size()), {keys[item], item});
+    if (keys[item] <= threshold_) continue;
+    place(int(heap_.size()), {keys[item], item});
+    waitingTotal_ += keys[item];
   }
   for (int slot = int(heap_.size()) / 2 - 1; slot >= 0; --slot) siftDown(slot, heap_[slot]);
 }
@@ -21,9 +24,13 @@ void WorstFirstQueue::update(int item, double key) {
     if (key > threshold_) push({key, item});
     return;
   }
+  waitingTotal_ -= heap_[slot].key;
   if (key <= threshold_) {
     remove(slot);
-  } else if (key > heap_[slot].key) {
+    return;
+  }
+  waitingTotal_ += key;
+  if (key > heap_[slot].key) {
     siftUp(slot, {key, item});
   } else {
     siftDown(slot, {key, item});
@@ -66,6 +73,7 @@ void WorstFirstQueue::siftDown(int slot, Entry entry) {
 }
 
 void WorstFirstQueue::push(const Entry& entry) {
+  waitingTotal_ += entry.key;
   heap_.push_back(entry);
   siftUp(int(heap_.size()) - 1, entry);
 }

@@ -98,6 +98,8 @@ class MicroCollisionSolver : public ContactSolver {
   void afterImpulse(const StepContext& context, const PointState& state);
   double severity(const PointState& state) const;
   int worstVelocityPoint() const;
+  void recordRound();
+  bool stillProgressing() const;
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
                        const Vec2& desiredChange, FrictionState& frictionState) const;
   void applyVelocityChange(const StepContext& context, int index, int iteration);
@@ -127,8 +129,9 @@ class MicroCollisionSolver : public ContactSolver {
       contactsOfBodyStart_;  ///< states_ of body i: contactsOfBody_[start[i], start[i+1])
   std::vector<int> contactsOfBody_;
   std::vector<double> queueKeys_;
-  WorstFirstQueue queue_;  ///< contact points by how badly they need resolving
-  double dt_ = 0.0;        ///< the step being resolved
+  WorstFirstQueue queue_;              ///< contact points by how badly they need resolving
+  std::vector<double> waitingTotals_;  ///< the queue's waiting total after each round (recordRound)
+  double dt_ = 0.0;                    ///< the step being resolved
   SolveReport report_;
 };
 

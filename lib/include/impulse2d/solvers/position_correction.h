@@ -7,7 +7,8 @@
 // the manifold normal), and moves and turns the two bodies directly so that a fraction of the
 // penetration beyond the slop goes away, each body in proportion to its inverse mass and inertia,
 // as an impulse would but applied to positions. Velocities are never touched, so the pass adds no
-// kinetic energy; sweeps are repeated because moving one body changes its other contacts.
+// kinetic energy; sweeps are repeated because moving one body changes its other contacts, until
+// one moves nothing.
 #pragma once
 
 #include "impulse2d/solver.h"

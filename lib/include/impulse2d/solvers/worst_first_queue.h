@@ -21,6 +21,8 @@ class WorstFirstQueue {
   bool empty() const { return heap_.empty(); }
   /// Items waiting (keys above the threshold).
   int size() const { return int(heap_.size()); }
+  /// The sum of the waiting items' keys, kept as they join, change and leave.
+  double waitingTotal() const { return waitingTotal_; }
 
  private:
   struct Entry {
@@ -41,6 +43,7 @@ class WorstFirstQueue {
   std::vector<Entry> heap_;  ///< waiting items in heap order, each with its key
   std::vector<int> slotOf_;  ///< where each item sits in heap_, or kOutside
   double threshold_ = 0.0;
+  double waitingTotal_ = 0.0;
 };
 
 }  // namespace impulse2d
