@@ -243,7 +243,8 @@ class FlipRule {
     }
     ++failures_;
     if (backtrack_) {
-      const size_t share = bestFound_.size() >> failures_;
+      const bool halvings = failures_ < std::numeric_limits<size_t>::digits;
+      const size_t share = halvings ? bestFound_.size() >> failures_ : 0;
       if (share > 0) {
         states = bestStates_;
         flip(bestFound_, share, states);
