@@ -173,6 +173,8 @@ TEST_CASE("a resting pyramid is solved on last step's factors, to the same impul
             << " factorizations with kept factors, " << freshFactorizations << " without\n";
   CHECK(keptFactorizations == 0);
   CHECK(freshFactorizations >= stepsIn(1.0) - 10);
+  // Every solve on kept factors ends at round-off (1e-14 of the system's scale), so over 60 steps
+  // the two runs may part by round-off only: 7e-13 m measured on pyramid20 over 300 steps.
   for (size_t b = 0; b < keptPositions.size(); ++b) {
     CHECK((keptPositions[b] - freshPositions[b]).norm() < 1e-9);
   }

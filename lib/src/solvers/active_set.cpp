@@ -358,7 +358,7 @@ std::pair<double, double> givens(double a, double b) {
 /// the Krylov space of A K⁻¹ holds what K misses. A system whose values moved a little needs a
 /// round or two, one with k rows changed (k states flipped since K) about k + 1. False if the
 /// residual is not at round-off within keptRounds (K is too far from A).
-bool KeptFactorization::refineOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
+bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
   const int rounds = settings_.keptRounds;
   x = factors_->lu.solve(rhs);
   const double tolerance =
@@ -405,10 +405,10 @@ bool KeptFactorization::refineOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::V
 /// One solve of A x = rhs, then `refinements` solves centred on the last answer
 /// (J u + r(λ − λ_last) = target: a proximal point step, the velocity change W + r stays
 /// positive definite), so the velocity rows end exact while redundant contacts keep the split
-/// the first solve chose. Each solve on the fresh factors, or by refinement on kept ones.
+/// the first solve chose. Each solve on the fresh factors, or by GMRES on kept ones.
 bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
   const auto solveOnce = [this](const Eigen::VectorXd& b, Eigen::VectorXd& out) {
-    if (!fresh_) return refineOnKeptFactors(b, out);
+    if (!fresh_) return solveOnKeptFactors(b, out);
     out = factors_->lu.solve(b);
     return true;
   };
@@ -423,10 +423,7 @@ bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorX
 
 Eigen::VectorXd KeptFactorization::solve(const Eigen::VectorXd& rhs) {
   Eigen::VectorXd x;
-  if (!fresh_ && solveProximal(rhs, x)) {
-    ++keptSolves_;
-    return x.tail(shift_.size());
-  }
+  if (!fresh_ && solveProximal(rhs, x)) return x.tail(shift_.size());
   if (!fresh_ && !factorize()) return Eigen::VectorXd::Constant(shift_.size(), std::nan(""));
   solveProximal(rhs, x);
   return x.tail(shift_.size());
@@ -453,11 +450,6 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
   FlipRule flips(settings);
   ActiveSetAnswer answer;
   const int factorizationsBefore = kept.factorizations();
-  const int keptSolvesBefore = kept.keptSolves();
-  const auto tally = [&] {
-    answer.factorizations = kept.factorizations() - factorizationsBefore;
-    answer.keptSolves = kept.keptSolves() - keptSolvesBefore;
-  };
   std::unordered_map<std::string, int> visits;  // how often each set of states was solved
   // Only the step's first system is solved on kept factors: after a flip, the flipped rows
   // differ from every earlier system (a block flip changes many), and the path of the flips
@@ -483,7 +475,7 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
         kept.prepare(system, shift, firstSystem && settings.keepFactors, settings);
     firstSystem = false;
     if (prepared) answer.impulses = kept.solve(rhs);
-    tally();
+    answer.factorizations = kept.factorizations() - factorizationsBefore;
     if (!prepared || !answer.impulses.allFinite()) {
       answer.failure = "active set: singular system at factorization " +
                        std::to_string(answer.factorizations) + " (" + kept.lastError() + ")";

@@ -61,8 +61,6 @@ struct IslandProblem {
 struct ActiveSetAnswer {
   bool solved = false;
   int factorizations = 0;
-  /// Solves done on the factors of an earlier system (KeptFactorization), none factorized anew.
-  int keptSolves = 0;
   Eigen::VectorXd impulses;          ///< (λn, λt) per point
   std::vector<ContactState> states;  ///< each point's state in the answer
   std::string failure;
@@ -86,7 +84,7 @@ class KeptFactorization {
 
   /// Makes A = system, whose last `shift.size()` rows carry the regularization `shift`, the
   /// system solve() answers. Factorizes at once unless `reuse` and factors of a system of the
-  /// same pattern are kept. False (with lastError()) if that factorization fails.
+  /// same size are kept. False (with lastError()) if that factorization fails.
   bool prepare(const Eigen::SparseMatrix<double>& system, const Eigen::VectorXd& shift, bool reuse,
                const ActiveSetSettings& settings);
   /// The impulses (the last `shift.size()` entries) of the system with its regularization taken
@@ -94,24 +92,22 @@ class KeptFactorization {
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
 
   int factorizations() const { return factorizations_; }
-  int keptSolves() const { return keptSolves_; }
   const std::string& lastError() const { return lastError_; }
 
  private:
   struct Factors;
   bool factorize();
-  bool refineOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
+  bool solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
   bool solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
 
   std::unique_ptr<Factors> factors_;
   Eigen::SparseMatrix<double> system_;  ///< A, the system solve() answers
   Eigen::VectorXd shift_;
   ActiveSetSettings settings_;
-  double rowSum_ = 0.0;        ///< |A₀|: the largest sum of a row's magnitudes
+  double rowSum_ = 0.0;        ///< |A|: the largest sum of a row's magnitudes
   bool factorsValid_ = false;  ///< the factors hold a successful factorization
   bool fresh_ = false;         ///< the factors are system_'s own
   int factorizations_ = 0;
-  int keptSolves_ = 0;
   std::string lastError_;
 };
 
