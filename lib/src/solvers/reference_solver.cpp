@@ -46,11 +46,14 @@ double pointViolation(double normalImpulse, double tangentImpulse, double normal
                    std::min(sliding, alongSliding)});
 }
 
-/// N s. A body's momentum as seen from a point: m|v|, or I|ω| over the point's lever arm.
-double momentumAt(const Body& body, const Vec2& point) {
+/// N s. A body's momentum as seen from a point: m|v|, or I|ω| over the point's lever arm, or the
+/// impulse the step's forces gave it, m|a|dt — which is what is left of the body's motion at the
+/// top of its flight, where its velocity passes through 0 (a box thrown up along a wall).
+double momentumAt(const Body& body, const Vec2& point, double dt) {
   const double lever = (point - body.position).norm();
   const double angular = lever > 0.0 ? body.inertia * std::abs(body.angularVelocity) / lever : 0.0;
-  return std::max(body.mass * body.velocity.norm(), angular);
+  return std::max(
+      {body.mass * body.velocity.norm(), angular, body.mass * body.lastAcceleration.norm() * dt});
 }
 
 /// The dense LCP of one island, variables (λn, λt⁺, λt⁻, β) per point, from the island's
@@ -181,10 +184,11 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
     for (int i = 0; i < manifold.pointCount; ++i) {
       const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
       const double normalVelocity = relativeVelocity(a, b, point.point, manifold.normal);
-      PointRow row{static_cast<int>(m), i, manifold.friction,
-                   targetSeparatingVelocity(normalVelocity, point.penetration, manifold.restitution,
-                                            context.dt, settings_.targets),
-                   std::max(momentumAt(a, point.point), momentumAt(b, point.point))};
+      PointRow row{
+          static_cast<int>(m), i, manifold.friction,
+          targetSeparatingVelocity(normalVelocity, point.penetration, manifold.restitution,
+                                   context.dt, settings_.targets),
+          std::max(momentumAt(a, point.point, context.dt), momentumAt(b, point.point, context.dt))};
       row.body = {a.isStatic() ? -1 : manifold.bodyA, b.isStatic() ? -1 : manifold.bodyB};
       const std::array<Vec2, 2> axes{{manifold.normal, manifold.tangent()}};
       for (size_t axis = 0; axis < 2; ++axis) {
@@ -492,8 +496,8 @@ double ReferenceSolver::residualOver(const std::vector<int>& points,
 // cannot vanish when the answer does (a corner touching down, an elastic row that has already
 // separated, where every impulse is 0 and rounding is all that is left): the largest impulse, each
 // point's cancelling impulses (what stops its normal and tangent motion alone, velocity over
-// effective mass) and the momenta of the bodies in contact (m|v|, and I|ω| over the point's lever
-// arm).
+// effective mass) and the momenta of the bodies in contact (m|v|, I|ω| over the point's lever
+// arm, and the impulse of the step's forces m|a|dt, for a body whose velocity passes through 0).
 double ReferenceSolver::impulseScale(const std::vector<int>& points,
                                      const Eigen::VectorXd& impulses) const {
   double scale = 0.0;

@@ -82,6 +82,7 @@ class ReferenceSolver : public ContactSolver {
     double friction = 0.0;
     double targetNormalVelocity = 0.0;
     double momentum = 0.0;  ///< N s, the larger of its two bodies' momenta seen from the point
+                            ///< (momentumAt)
     std::array<int, 2> body{{-1, -1}};  ///< A and B, −1 for a static body
     /// The Jacobian rows (normal, tangent) on A and B: −(d, r×d) and +(d, r×d).
     std::array<std::array<Eigen::Vector3d, 2>, 2> jacobian{};
