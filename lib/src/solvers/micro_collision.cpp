@@ -383,8 +383,9 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
 // After an impulse at a point: the contact velocities of every point sharing one of its bodies
 // (and their places in the queue), and in a traced step the bodies as the impulse left them.
 void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointState& state) {
-  refreshContactVelocities(context, state.bodyA);
-  refreshContactVelocities(context, state.bodyB);
+  refreshContactVelocities(context, state.bodyA, -1);
+  refreshContactVelocities(context, state.bodyB,
+                           context.bodies[state.bodyA].isStatic() ? -1 : state.bodyA);
   if (context.observer) {
     storeVelocity(context, state.bodyA);
     storeVelocity(context, state.bodyB);
@@ -445,10 +446,14 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
   return true;
 }
 
-void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, int bodyIndex) {
+// The points of one body, but for those it shares with `refreshedBody` (whose points were just
+// refreshed, −1 for none): the point of an impulse is listed under both its bodies.
+void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, int bodyIndex,
+                                                    int refreshedBody) {
   if (context.bodies[bodyIndex].isStatic()) return;
   for (int i = contactsOfBodyStart_[bodyIndex]; i < contactsOfBodyStart_[bodyIndex + 1]; ++i) {
     PointState& state = states_[contactsOfBody_[i]];
+    if (state.bodyA == refreshedBody || state.bodyB == refreshedBody) continue;
     state.contactVelocity = contactVelocityNow(state);
     queue_.update(contactsOfBody_[i], severity(state));
   }
@@ -584,8 +589,8 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
 // After a move at a point: the penetrations of every point sharing one of its bodies (and their
 // places in the queue), and in a traced step the bodies as the move left them.
 void MicroCollisionSolver::afterMove(const StepContext& context, const PointState& state) {
-  refreshPenetrations(state.bodyA);
-  refreshPenetrations(state.bodyB);
+  refreshPenetrations(state.bodyA, -1);
+  refreshPenetrations(state.bodyB, poses_[state.bodyA].movable ? state.bodyA : -1);
   if (context.observer) {
     storePose(context, state.bodyA);
     storePose(context, state.bodyB);
@@ -636,10 +641,12 @@ void MicroCollisionSolver::moveBody(Pose& body, const Vec2& arm, const Vec2& dir
   body.moved = true;
 }
 
-void MicroCollisionSolver::refreshPenetrations(int bodyIndex) {
+// The points of one body, but for those it shares with `refreshedBody` (as above).
+void MicroCollisionSolver::refreshPenetrations(int bodyIndex, int refreshedBody) {
   if (!poses_[bodyIndex].movable) return;
   for (int i = contactsOfBodyStart_[bodyIndex]; i < contactsOfBodyStart_[bodyIndex + 1]; ++i) {
     PointState& state = states_[contactsOfBody_[i]];
+    if (state.bodyA == refreshedBody || state.bodyB == refreshedBody) continue;
     state.penetration = penetrationNow(state);
     queue_.update(contactsOfBody_[i], state.penetration);
   }

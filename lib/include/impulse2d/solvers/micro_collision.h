@@ -39,11 +39,24 @@ class MicroCollisionSolver : public ContactSolver {
     bool movable = false;  ///< not static
     bool moved = false;    ///< since the body last got its pose
     Vec2 toWorld(const Vec2& local) const { return position + rotate(cosine, sine, local); }
+    /// A turn below kSmallTurn (a circle's move turns it by round-off) rotates the cosine and
+    /// sine by the turn's own, from their series, whose first left-out terms are then below
+    /// 1e-20; a larger one takes them from the angle.
     void turnBy(double turn) {
       angle += turn;
-      cosine = std::cos(angle);
-      sine = std::sin(angle);
+      if (std::abs(turn) > kSmallTurn) {
+        cosine = std::cos(angle);
+        sine = std::sin(angle);
+        return;
+      }
+      const double square = turn * turn;
+      const double turnCosine = 1.0 - square / 2.0 + square * square / 24.0;
+      const double turnSine = turn * (1.0 - square / 6.0 + square * square / 120.0);
+      const double newCosine = cosine * turnCosine - sine * turnSine;
+      sine = sine * turnCosine + cosine * turnSine;
+      cosine = newCosine;
     }
+    static constexpr double kSmallTurn = 1e-3;  ///< rad
   };
   struct PointState {
     // What the penetration phase reads, together ...
@@ -103,7 +116,7 @@ class MicroCollisionSolver : public ContactSolver {
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
                        const Vec2& desiredChange, FrictionState& frictionState) const;
   void applyVelocityChange(const StepContext& context, int index, int iteration);
-  void refreshContactVelocities(const StepContext& context, int bodyIndex);
+  void refreshContactVelocities(const StepContext& context, int bodyIndex, int refreshedBody);
 
   int worstPenetration() const;
   void resolvePenetration(const StepContext& context, int index, int iteration);
@@ -118,7 +131,7 @@ class MicroCollisionSolver : public ContactSolver {
   double penetrationNow(const PointState& state) const;
   void moveBody(Pose& body, const Vec2& arm, const Vec2& direction, double penetration,
                 double totalInertia) const;
-  void refreshPenetrations(int bodyIndex);
+  void refreshPenetrations(int bodyIndex, int refreshedBody);
 
   MicroCollisionSettings settings_;
   std::vector<SolverBody> solverBodies_;  ///< by body, during the velocity phase
