@@ -95,6 +95,7 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
                                       {"harris_tolerance", &s.lemke.harrisTolerance},
                                       {"lemke_island_points", &s.lemkeIslandPoints},
                                       {"lemke_fallback_points", &s.lemkeFallbackPoints},
+                                      {"restitution_in_two_solves", &s.restitutionInTwoSolves},
                                       {"guess_sweeps", &s.activeSet.guessSweeps},
                                       {"max_guess_sweeps", &s.activeSet.maxGuessSweeps},
                                       {"warm_states", &s.activeSet.warmStates},

@@ -289,6 +289,13 @@ struct ReferenceSolverSettings {
   int lemkeFallbackPoints = 300;
   /// The active set of large islands.
   ActiveSetSettings activeSet;
+  /// When no impulses meet an island's bounce targets together (every path ends on a ray: a box
+  /// sliding down a slope into a wall bounces off it while friction holds its face, and Newton's
+  /// law of restitution at several contacts with friction need not have an answer), the island
+  /// bounces by Poisson's law in two solves: first compression, every bounce target taken out;
+  /// then each bouncing point pushed by its restitution times its compression impulse, and the
+  /// island solved again with no bounce. Both solves are checked. Off: the step fails.
+  bool restitutionInTwoSolves = true;
   /// Bounce targets and speculative gaps by the same rules as sequential impulses, but without
   /// penetration bias (penetration is the position pass's alone): a bias asks the points of a
   /// statically indeterminate pile to separate at rates that differ from corner to corner, and

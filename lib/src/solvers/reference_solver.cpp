@@ -158,6 +158,7 @@ Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
   buildDelassus(context);
   buildFreeVelocity(context);
   Eigen::VectorXd impulses = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
+  pushed_ = Eigen::VectorXd::Zero(impulses.size());
   int largeIslands = 0;
   for (const std::vector<int>& island : islands_) {
     solveIsland(context, island, largeIslands, impulses);
@@ -170,7 +171,7 @@ Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
            << " pivots and factorizations";
     fail(reason.str());
   }
-  return impulses;
+  return impulses + pushed_;
 }
 
 // The targets use the closing velocity before the solve, with the same rules (bounce threshold,
@@ -185,9 +186,14 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
       const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
       const double normalVelocity = relativeVelocity(a, b, point.point, manifold.normal);
       PointRow row{
-          static_cast<int>(m), i, manifold.friction,
+          static_cast<int>(m),
+          i,
+          manifold.friction,
           targetSeparatingVelocity(normalVelocity, point.penetration, manifold.restitution,
                                    context.dt, settings_.targets),
+          targetSeparatingVelocity(normalVelocity, point.penetration, 0.0, context.dt,
+                                   settings_.targets),
+          manifold.restitution,
           std::max(momentumAt(a, point.point, context.dt), momentumAt(b, point.point, context.dt))};
       row.body = {a.isStatic() ? -1 : manifold.bodyA, b.isStatic() ? -1 : manifold.bodyB};
       const std::array<Vec2, 2> axes{{manifold.normal, manifold.tangent()}};
@@ -299,11 +305,25 @@ std::vector<int> ReferenceSolver::inFeatureIdOrder(const StepContext& context,
 }
 
 // Small islands by Lemke; large ones by the active set, with Lemke as the fallback while the
-// island is not too large for it. A failure ends the solve with its reason.
+// island is not too large for it. An island whose bounces have no answer together bounces in
+// two solves (restitutionInTwoSolves); any other failure ends the solve with its reason.
 void ReferenceSolver::solveIsland(const StepContext& context, const std::vector<int>& island,
                                   int& largeIslands, Eigen::VectorXd& impulses) {
-  const int points = static_cast<int>(island.size());
   std::string failure;
+  if (solveIslandOnce(context, island, largeIslands, impulses, failure)) return;
+  const bool bounces = std::any_of(island.begin(), island.end(), [this](int i) {
+    const PointRow& row = rows_[static_cast<size_t>(i)];
+    return row.targetNormalVelocity > row.inelasticTarget;
+  });
+  if (!settings_.restitutionInTwoSolves || !bounces) fail(failure);
+  bounceInTwoSolves(context, island, largeIslands, impulses, failure);
+}
+
+bool ReferenceSolver::solveIslandOnce(const StepContext& context, const std::vector<int>& island,
+                                      int& largeIslands, Eigen::VectorXd& impulses,
+                                      std::string& failure) {
+  const int points = static_cast<int>(island.size());
+  failure.clear();
   if (points > settings_.lemkeIslandPoints) {
     const std::vector<int> ordered = inFeatureIdOrder(context, island);
     const ActiveSetAnswer answer = solveByActiveSet(context, ordered, largeIslands++);
@@ -314,19 +334,53 @@ void ReferenceSolver::solveIsland(const StepContext& context, const std::vector<
         impulses.segment<2>(2 * i) = answer.impulses.segment<2>(2 * k);
         rows_[static_cast<size_t>(i)].state = answer.states[static_cast<size_t>(k)];
       }
-      return;
+      return true;
     }
-    if (points > settings_.lemkeFallbackPoints) fail(answer.failure);
-    failure = answer.failure + "; ";
+    failure = answer.failure;
+    if (points > settings_.lemkeFallbackPoints) return false;
+    failure += "; ";
   }
   const LcpSolution solution = solveByLemke(island);
   report_.iterations += solution.pivots;
-  if (!solution.solved) fail(failure + solution.failure);
+  if (!solution.solved) {
+    failure += solution.failure;
+    return false;
+  }
   const Eigen::VectorXd answer = islandImpulses(island, solution.z);
   for (const int point : island) {
     impulses.segment<2>(2 * point) = answer.segment<2>(2 * point);
     PointRow& row = rows_[static_cast<size_t>(point)];
     row.state = stateOfImpulses(answer(2 * point), answer(2 * point + 1), row.friction);
+  }
+  return true;
+}
+
+// Poisson's law of restitution in two solves. Compression: the island with its bounce targets
+// taken out, which has an answer λc like any problem whose targets are 0 or below. Restitution:
+// each point pushed along its normal by e·λc,n on top of λc, the free velocities moved by what
+// both do (W times them), and the island solved again with no bounce, so nothing ends closing.
+// What is checked from then on is that second problem; pushed_ keeps λc and the push, and the
+// step applies them with the second answer.
+void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::vector<int>& island,
+                                        int& largeIslands, Eigen::VectorXd& impulses,
+                                        const std::string& newtonFailure) {
+  for (const int i : island) {
+    PointRow& row = rows_[static_cast<size_t>(i)];
+    row.targetNormalVelocity = row.inelasticTarget;
+  }
+  std::string failure;
+  if (!solveIslandOnce(context, island, largeIslands, impulses, failure)) {
+    fail(newtonFailure + "; in two solves, compression: " + failure);
+  }
+  Eigen::VectorXd push = Eigen::VectorXd::Zero(impulses.size());
+  for (const int i : island) {
+    push.segment<2>(2 * i) = impulses.segment<2>(2 * i);
+    push(2 * i) *= 1.0 + rows_[static_cast<size_t>(i)].restitution;
+  }
+  freeVelocity_ += delassus_ * push;
+  pushed_ += push;
+  if (!solveIslandOnce(context, island, largeIslands, impulses, failure)) {
+    fail(newtonFailure + "; in two solves, restitution: " + failure);
   }
 }
 

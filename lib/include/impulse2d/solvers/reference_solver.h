@@ -81,6 +81,8 @@ class ReferenceSolver : public ContactSolver {
     int point = 0;
     double friction = 0.0;
     double targetNormalVelocity = 0.0;
+    double inelasticTarget = 0.0;  ///< the target without a bounce (restitutionInTwoSolves)
+    double restitution = 0.0;      ///< the manifold's
     double momentum = 0.0;  ///< N s, the larger of its two bodies' momenta seen from the point
                             ///< (momentumAt)
     std::array<int, 2> body{{-1, -1}};  ///< A and B, −1 for a static body
@@ -99,6 +101,13 @@ class ReferenceSolver : public ContactSolver {
   /// largeIslands counts the islands given to the active set so far this step.
   void solveIsland(const StepContext& context, const std::vector<int>& island, int& largeIslands,
                    Eigen::VectorXd& impulses);
+  /// One solve of the island's problem as posed; false with the reason if none of the methods
+  /// answers it.
+  bool solveIslandOnce(const StepContext& context, const std::vector<int>& island,
+                       int& largeIslands, Eigen::VectorXd& impulses, std::string& failure);
+  void bounceInTwoSolves(const StepContext& context, const std::vector<int>& island,
+                         int& largeIslands, Eigen::VectorXd& impulses,
+                         const std::string& newtonFailure);
   std::vector<int> inFeatureIdOrder(const StepContext& context,
                                     const std::vector<int>& island) const;
   LcpSolution solveByLemke(const std::vector<int>& island) const;
@@ -115,6 +124,9 @@ class ReferenceSolver : public ContactSolver {
   std::vector<PointRow> rows_;
   Eigen::SparseMatrix<double> delassus_;  ///< 2p × 2p
   Eigen::VectorXd freeVelocity_;          ///< 2p: (vn, vt) of each point before the solve
+  /// 2p: impulses applied before the checked solve, the compression and restitution impulses of
+  /// an island that bounced in two solves (freeVelocity_ includes what they do); 0 elsewhere.
+  Eigen::VectorXd pushed_;
   /// The points of each island: points joined through dynamic bodies.
   std::vector<std::vector<int>> islands_;
   /// The active set's factors of each large island's last system, by the island's ordinal
