@@ -357,15 +357,19 @@ bool ReferenceSolver::solveIslandOnce(const StepContext& context, const std::vec
 
 // Poisson's law of restitution in two solves. Compression: the island with its bounce targets
 // taken out, which has an answer λc like any problem whose targets are 0 or below. Restitution:
-// each point pushed along its normal by e·λc,n on top of λc, the free velocities moved by what
-// both do (W times them), and the island solved again with no bounce, so nothing ends closing.
+// every point pushed by λc, and each point that was to bounce also along its normal by e·λc,n
+// (a point closing too slowly to bounce gets none, as under Newton's law), the free velocities
+// moved by what both do (W times them), and the island solved again with no bounce, so nothing
+// ends closing.
 // What is checked from then on is that second problem; pushed_ keeps λc and the push, and the
 // step applies them with the second answer.
 void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::vector<int>& island,
                                         int& largeIslands, Eigen::VectorXd& impulses,
                                         const std::string& newtonFailure) {
+  std::vector<bool> bouncing(rows_.size(), false);
   for (const int i : island) {
     PointRow& row = rows_[static_cast<size_t>(i)];
+    bouncing[static_cast<size_t>(i)] = row.targetNormalVelocity > row.inelasticTarget;
     row.targetNormalVelocity = row.inelasticTarget;
   }
   std::string failure;
@@ -375,7 +379,9 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
   Eigen::VectorXd push = Eigen::VectorXd::Zero(impulses.size());
   for (const int i : island) {
     push.segment<2>(2 * i) = impulses.segment<2>(2 * i);
-    push(2 * i) *= 1.0 + rows_[static_cast<size_t>(i)].restitution;
+    if (bouncing[static_cast<size_t>(i)]) {
+      push(2 * i) *= 1.0 + rows_[static_cast<size_t>(i)].restitution;
+    }
   }
   freeVelocity_ += delassus_ * push;
   pushed_ += push;
