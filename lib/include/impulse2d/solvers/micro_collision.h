@@ -39,24 +39,11 @@ class MicroCollisionSolver : public ContactSolver {
     bool movable = false;  ///< not static
     bool moved = false;    ///< since the body last got its pose
     Vec2 toWorld(const Vec2& local) const { return position + rotate(cosine, sine, local); }
-    /// A turn below kSmallTurn (a circle's move turns it by round-off) rotates the cosine and
-    /// sine by the turn's own, from their series, whose first left-out terms are then below
-    /// 1e-20; a larger one takes them from the angle.
     void turnBy(double turn) {
       angle += turn;
-      if (std::abs(turn) > kSmallTurn) {
-        cosine = std::cos(angle);
-        sine = std::sin(angle);
-        return;
-      }
-      const double square = turn * turn;
-      const double turnCosine = 1.0 - square / 2.0 + square * square / 24.0;
-      const double turnSine = turn * (1.0 - square / 6.0 + square * square / 120.0);
-      const double newCosine = cosine * turnCosine - sine * turnSine;
-      sine = sine * turnCosine + cosine * turnSine;
-      cosine = newCosine;
+      cosine = std::cos(angle);
+      sine = std::sin(angle);
     }
-    static constexpr double kSmallTurn = 1e-3;  ///< rad
   };
   struct PointState {
     // What the penetration phase reads, together ...
