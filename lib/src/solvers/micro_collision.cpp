@@ -641,7 +641,8 @@ void MicroCollisionSolver::moveBody(Pose& body, const Vec2& arm, const Vec2& dir
   body.moved = true;
 }
 
-// The points of one body, but for those it shares with `refreshedBody` (as above).
+// The points of one body, but for those it shares with `refreshedBody` (as in
+// refreshContactVelocities).
 void MicroCollisionSolver::refreshPenetrations(int bodyIndex, int refreshedBody) {
   if (!poses_[bodyIndex].movable) return;
   for (int i = contactsOfBodyStart_[bodyIndex]; i < contactsOfBodyStart_[bodyIndex + 1]; ++i) {

@@ -312,8 +312,7 @@ void ReferenceSolver::solveIsland(const StepContext& context, const std::vector<
   std::string failure;
   if (solveIslandOnce(context, island, largeIslands, impulses, failure)) return;
   const bool bounces = std::any_of(island.begin(), island.end(), [this](int i) {
-    const PointRow& row = rows_[static_cast<size_t>(i)];
-    return row.targetNormalVelocity > row.inelasticTarget;
+    return rows_[static_cast<size_t>(i)].bounces();
   });
   if (!settings_.restitutionInTwoSolves || !bounces) fail(failure);
   bounceInTwoSolves(context, island, largeIslands, impulses, failure);
@@ -360,16 +359,15 @@ bool ReferenceSolver::solveIslandOnce(const StepContext& context, const std::vec
 // every point pushed by λc, and each point that was to bounce also along its normal by e·λc,n
 // (a point closing too slowly to bounce gets none, as under Newton's law), the free velocities
 // moved by what both do (W times them), and the island solved again with no bounce, so nothing
-// ends closing.
-// What is checked from then on is that second problem; pushed_ keeps λc and the push, and the
-// step applies them with the second answer.
+// ends closing. What is checked from then on is that second problem; pushed_ keeps λc and the
+// push, and the step applies them with the second answer.
 void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::vector<int>& island,
                                         int& largeIslands, Eigen::VectorXd& impulses,
                                         const std::string& newtonFailure) {
-  std::vector<bool> bouncing(rows_.size(), false);
-  for (const int i : island) {
-    PointRow& row = rows_[static_cast<size_t>(i)];
-    bouncing[static_cast<size_t>(i)] = row.targetNormalVelocity > row.inelasticTarget;
+  std::vector<double> restitution(island.size(), 0.0);  // of the points that were to bounce
+  for (size_t k = 0; k < island.size(); ++k) {
+    PointRow& row = rows_[static_cast<size_t>(island[k])];
+    if (row.bounces()) restitution[k] = row.restitution;
     row.targetNormalVelocity = row.inelasticTarget;
   }
   std::string failure;
@@ -377,11 +375,10 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
     fail(newtonFailure + "; in two solves, compression: " + failure);
   }
   Eigen::VectorXd push = Eigen::VectorXd::Zero(impulses.size());
-  for (const int i : island) {
+  for (size_t k = 0; k < island.size(); ++k) {
+    const int i = island[k];
     push.segment<2>(2 * i) = impulses.segment<2>(2 * i);
-    if (bouncing[static_cast<size_t>(i)]) {
-      push(2 * i) *= 1.0 + rows_[static_cast<size_t>(i)].restitution;
-    }
+    push(2 * i) *= 1.0 + restitution[k];
   }
   freeVelocity_ += delassus_ * push;
   pushed_ += push;

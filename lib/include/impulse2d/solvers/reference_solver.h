@@ -92,6 +92,8 @@ class ReferenceSolver : public ContactSolver {
     bool carried = false;  ///< lastImpulse is last step's answer at this point (ContactPoint)
     ContactState lastState = ContactState::Unknown;  ///< kept by feature id
     ContactState state = ContactState::Unknown;      ///< this step's answer's
+    /// Its target asks for a bounce (restitution raised it above the inelastic one).
+    bool bounces() const { return targetNormalVelocity > inelasticTarget; }
   };
 
   void collectPoints(const StepContext& context);
