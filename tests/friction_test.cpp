@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <iostream>
+#include <string>
 
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/micro_collision.h"
@@ -35,8 +36,9 @@ struct SlopeRun {
   double rollingMismatch = 0.0;  ///< |v − ω r| / |v| at the end, for disks
 };
 
-SlopeRun runOnSlope(const BodyDef& body, double angle, double friction, double seconds) {
-  Scene scene = lecture::sceneWith("micro", kDt);
+SlopeRun runOnSlope(const BodyDef& body, double angle, double friction, double seconds,
+                    const std::string& solver = "micro") {
+  Scene scene = lecture::sceneWith(solver, kDt);
   scene.bodies.push_back(lecture::ground(friction, angle));
   scene.bodies.push_back(body);
   auto world = buildWorld(scene);
@@ -115,4 +117,34 @@ TEST_CASE("a disk with enough friction rolls at (2/3) g sin θ", "[friction][rol
             << "\n";
   CHECK(run.acceleration == Approx(expected).epsilon(0.02));
   CHECK(run.rollingMismatch < 0.01);
+}
+
+// After a landing every method carries the landing's impulses into the next steps (warm
+// starting); the slip must still be resolved in each of them. Micro once kept a landed disk's
+// friction total step after step, its normal need met by the carried total and its slip never
+// looked at: on 10° after a 5 cm drop it slipped ever faster, a = 1.169 m/s² for 1.136.
+TEST_CASE("a disk that lands on a slope rolls, or slips, at the analytic acceleration",
+          "[friction][rolling][landing]") {
+  const double lift = 0.05;
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double degreesOfSlope : {10.0, 20.0, 25.0}) {  // 3 s of slipping stay on the slope
+      const double angle = degrees(degreesOfSlope);
+      for (const double radius : {0.25, 1.0}) {
+        // Rolling needs μ ≥ tan θ / 3: twice that rolls, half of it slips.
+        for (const bool rolls : {true, false}) {
+          const double friction = (rolls ? 2.0 : 0.5) * std::tan(angle) / 3.0;
+          const double expected =
+              rolls ? 2.0 / 3.0 * lecture::kGravity * std::sin(angle)
+                    : lecture::kGravity * (std::sin(angle) - friction * std::cos(angle));
+          const SlopeRun run = runOnSlope(lecture::diskOnSlope(radius, angle, friction, lift),
+                                          angle, friction, 3.0, solver);
+          INFO(solver << ", " << degreesOfSlope << " deg, radius " << radius
+                      << (rolls ? ", rolls" : ", slips") << ": a = " << run.acceleration
+                      << " m/s^2, analytic " << expected);
+          CHECK(run.acceleration == Approx(expected).epsilon(0.02));
+          if (rolls) CHECK(run.rollingMismatch < 0.02);
+        }
+      }
+    }
+  }
 }

@@ -46,13 +46,12 @@ void checkBreaksBetween(const std::string& scene, const std::string& method, dou
 
 TEST_CASE("a stack of boxes stands up to the documented height", "[stability][stack]") {
   CHECK(holds("box_stack", "sequential", 40));
-  // Micro stands 40 boxes when it resolves both corners of a flat contact together (impulses and
-  // moves). One corner at a time, as the lecture does, the column stays near the limit from about
-  // 30 boxes and the figure is not monotone (37 fails, 43 holds; docs/stability.md), so the
-  // variant is pinned where the search first finds it failing.
+  // Micro stands 40 boxes, with both corners of a flat contact resolved together (impulses and
+  // moves) and one corner at a time, as the lecture does: since a warm-started point's slip is
+  // resolved from the step's start, the column no longer leans to the limit from 30 boxes (it
+  // failed at 37 before; docs/stability.md).
   CHECK(holds("box_stack", "micro", 40));
-  CHECK(holds("box_stack", "micro − pairs", 30));
-  CHECK(fails("box_stack", "micro − pairs", 37));
+  CHECK(holds("box_stack", "micro − pairs", 40));
   checkBreaksBetween("box_stack", "box2d", 27, 28);
   SECTION("warm starting and accumulation are what let sequential impulses hold a tall stack") {
     checkBreaksBetween("box_stack", "sequential − warm starting", 32, 33);

@@ -90,7 +90,10 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
       states_.push_back(preparePoint(context, m, p));
     }
   }
-  for (PointState& state : states_) state.contactVelocity = contactVelocityNow(state);
+  for (PointState& state : states_) {
+    state.contactVelocity = contactVelocityNow(state);
+    state.friction = carriedFriction(state, context.manifolds[state.manifold].friction);
+  }
   preparePairs();
   indexContactsByBody(context);
 }
@@ -220,6 +223,23 @@ Vec2 MicroCollisionSolver::warmStartTotals(const Manifold& manifold,
   if (!settings_.warmStart || point.bounced || point.normalImpulse <= 0.0) return Vec2::Zero();
   const double frictionLimit = settings_.friction ? manifold.friction * point.normalImpulse : 0.0;
   return Vec2(point.normalImpulse, std::clamp(point.tangentImpulse, -frictionLimit, frictionLimit));
+}
+
+// The friction state a warm-started point starts the step in, from the totals it carries, so
+// that worst first counts its slip (severity): inside the cone static friction holds and any slip
+// needs resolving; on the cone, dynamic friction that opposes the slip is settled, and friction
+// along the slip is not. Starting every point with no state left a disc that landed on a slope
+// with its landing's friction total step after step, its normal need met by the carried total
+// and its slip never looked at: it slipped ever faster (docs/friction.md).
+FrictionState MicroCollisionSolver::carriedFriction(const PointState& state,
+                                                    double friction) const {
+  if (!settings_.friction || friction <= 0.0) return FrictionState::None;
+  const FrictionState carried = frictionStateOf(normalPart(state.totalImpulse),
+                                                tangentPart(state.totalImpulse), friction, 0.0);
+  if (carried != FrictionState::Dynamic) return carried;
+  const bool opposesSlip =
+      tangentPart(state.totalImpulse) * tangentPart(state.contactVelocity) < 0.0;
+  return opposesSlip ? FrictionState::Dynamic : FrictionState::Static;
 }
 
 // Lists, for every body, the contact points it takes part in (compressed rows), so an impulse

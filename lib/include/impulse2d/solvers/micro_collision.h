@@ -86,6 +86,7 @@ class MicroCollisionSolver : public ContactSolver {
   void applyImpulse(const PointState& state, const Vec2& impulse);
   PointState preparePoint(const StepContext& context, int manifoldIndex, int pointIndex);
   Vec2 warmStartTotals(const Manifold& manifold, const ContactPoint& point) const;
+  FrictionState carriedFriction(const PointState& state, double friction) const;
   void indexContactsByBody(const StepContext& context);
   double appliedRestitution(const PointState& state, double closingSpeed) const;
   double accelerationVelocity(const StepContext& context, const Manifold& manifold) const;
