@@ -22,6 +22,7 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.severityCountsPushedPoints = false;
   settings.warmStart = false;
   settings.pairImpulses = false;
+  settings.pairBounces = false;
   settings.pairMoves = false;
   settings.passCapWhileProgressing = false;
   settings.positionEpsilon = 1e-5;
@@ -44,6 +45,7 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"severity_counts_pushed_points", &s.severityCountsPushedPoints},
           {"warm_start", &s.warmStart},
           {"pair_impulses", &s.pairImpulses},
+          {"pair_bounces", &s.pairBounces},
           {"pair_moves", &s.pairMoves},
           {"pass_cap_while_progressing", &s.passCapWhileProgressing},
           {"progress_rounds", &s.progressRounds},

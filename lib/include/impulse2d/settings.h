@@ -97,6 +97,11 @@ struct MicroCollisionSettings {
   /// point in one micro-collision, so a box's two corners do not rock each other. Otherwise, and
   /// when it would bounce, one point. Off: one point at a time.
   bool pairImpulses = true;
+  /// Pair bounces: with pair impulses, a two-point manifold whose points both bounce (neither has
+  /// yet) bounces as one micro-collision, each point to −c times its closing velocity now, so a
+  /// box landing flat leaves straight up. Off: a bounce passes point by point, and the first
+  /// corner's impulse spins the box (flat 0.5 m box, e = 0.8, 240 Hz: 3.0 rad/s, 0.93 of e²h).
+  bool pairBounces = true;
   /// Pair moves: the deepest point of a two-point manifold is resolved together with the other
   /// point, both penetrations removed by one move of each body (the 2×2 block solve on
   /// penetrations, as the position pass of sequential impulses does), so resolving one corner

@@ -417,20 +417,25 @@ void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointS
 // matrix. The friction total is shared between the points in proportion to their normal totals,
 // so each stays in its cone when the total does. Taken only when both points are engaged and
 // need resolving (a pair impulse where one corner is already resolved costs a settling pile more
-// than it saves: on a 40-row pyramid, 1.3 times the time over 300 steps), neither is to bounce
-// (a bounce passes point by point, as in the cradle), and the new totals push at both points
-// with static friction; otherwise false, and the worst point is resolved alone.
+// than it saves: on a 40-row pyramid, 1.3 times the time over 300 steps), both are to bounce or
+// neither (with pairBounces; without it a bounce passes point by point, as in the cradle), and
+// the new totals push at both points with static friction; otherwise false, and the worst point
+// is resolved alone. A pair that bounces takes each point to its bounce on its closing velocity
+// now, and both count as bounced.
 bool MicroCollisionSolver::applyPairChange(const StepContext& context, const PointState& worst,
                                            int iteration) {
   PointPair& pair = pairs_[worst.pair];
   const std::array<PointState*, 2> points = {&states_[pair.first], &states_[pair.first + 1]};
   Manifold& manifold = context.manifolds[worst.manifold];
   if (!settings_.friction || manifold.friction <= 0.0) return false;
+  const bool bounce = !points[0]->bounced && targetNormalVelocity(*points[0]) > 0.0;
+  if (bounce && !settings_.pairBounces) return false;
   std::array<Vec2, 2> desired;
   for (int i = 0; i < 2; ++i) {
     const PointState& point = *points[i];
-    if (!engaged(point) || point.bounced || targetNormalVelocity(point) > 0.0) return false;
-    if (severity(point) <= settings_.velocityEpsilon) return false;  // both must need it
+    if (!engaged(point) || point.bounced) return false;
+    if ((targetNormalVelocity(point) > 0.0) != bounce) return false;  // both bounce, or neither
+    if (severity(point) <= settings_.velocityEpsilon) return false;   // both must need it
     desired[i] = desiredVelocityChange(point);
   }
   if (pair.status == PointPair::Status::NotInverted) invertPairContactMatrix(pair);
@@ -452,7 +457,9 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
     impulses[i] = total - point.totalImpulse;
     point.totalImpulse = total;
     point.friction = FrictionState::Static;
+    point.bounced = point.bounced || bounce;
     ContactPoint& record = manifold.points[point.point];
+    record.bounced = point.bounced;
     record.normalImpulse = normalPart(total);
     record.tangentImpulse = tangentPart(total);
     record.friction = point.friction;
