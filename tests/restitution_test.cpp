@@ -136,7 +136,9 @@ FirstBounce flatBoxBounce(const std::string& solver, double restitution,
 // Two corners that land together bounce together: by symmetry the box leaves straight up, as a
 // ball does, to e²h. Micro bounces a two-point manifold as one micro-collision (pair_bounces);
 // one corner at a time the first corner's impulse turns the box and the second then bounces off
-// a different closing velocity. The 3 % allows sampling the apex and the landing at 240 Hz.
+// a different closing velocity. Sequential impulses and the reference bounce off the closing
+// speed before the step, which includes one step of gravity: the apex rises by about
+// (1 + g·dt/v)² − 1 = 1.9 % at 240 Hz from 1 m (v = 4.4 m/s); 3 % allows that and the sampling.
 TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-bounces]") {
   for (const std::string solver : {"micro", "sequential", "reference"}) {
     for (const double restitution : {0.5, 0.8}) {

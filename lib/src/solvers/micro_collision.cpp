@@ -298,6 +298,11 @@ double MicroCollisionSolver::targetNormalVelocity(const PointState& state) const
   return settings_.speculativeGaps ? std::min(0.0, state.penetration / dt_) : 0.0;
 }
 
+// A point whose target is a bounce it has not had yet in this step.
+bool MicroCollisionSolver::toBounce(const PointState& state) const {
+  return !state.bounced && targetNormalVelocity(state) > 0.0;
+}
+
 // The velocity change a contact point wants. Along the normal, the lecture's
 // Δv = −vs − c·(vs − vacc), i.e. the target minus the separating velocity, while the contact
 // touches, or (speculative gaps) its gap would close within the step, or (impulse totals) this
@@ -384,7 +389,7 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   Manifold& manifold = context.manifolds[state.manifold];
   ContactPoint& point = manifold.points[state.point];
   const Vec2 desired = desiredVelocityChange(state);
-  const bool bounces = !state.bounced && targetNormalVelocity(state) > 0.0;
+  const bool bounces = toBounce(state);
   const Vec2 before = settings_.impulseTotals ? state.totalImpulse : Vec2::Zero();
   const Vec2 impulse =
       newTotalImpulse(state, before, manifold.friction, desired, state.friction) - before;
@@ -428,14 +433,14 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
   const std::array<PointState*, 2> points = {&states_[pair.first], &states_[pair.first + 1]};
   Manifold& manifold = context.manifolds[worst.manifold];
   if (!settings_.friction || manifold.friction <= 0.0) return false;
-  const bool bounce = !points[0]->bounced && targetNormalVelocity(*points[0]) > 0.0;
+  const bool bounce = toBounce(*points[0]);
   if (bounce && !settings_.pairBounces) return false;
   std::array<Vec2, 2> desired;
   for (int i = 0; i < 2; ++i) {
     const PointState& point = *points[i];
     if (!engaged(point) || point.bounced) return false;
-    if ((targetNormalVelocity(point) > 0.0) != bounce) return false;  // both bounce, or neither
-    if (severity(point) <= settings_.velocityEpsilon) return false;   // both must need it
+    if (toBounce(point) != bounce) return false;                     // both bounce, or neither
+    if (severity(point) <= settings_.velocityEpsilon) return false;  // both must need it
     desired[i] = desiredVelocityChange(point);
   }
   if (pair.status == PointPair::Status::NotInverted) invertPairContactMatrix(pair);

@@ -61,6 +61,7 @@ class MicroCollisionSolver : public ContactSolver {
     double accelerationVelocity = 0.0;    ///< vacc: the last update's acceleration along n, m/s
     double restitution = 0.0;             ///< the manifold's mixed coefficient
     bool bounced = false;                 ///< had its bounce this step (targetNormalVelocity)
+    /// Set by each impulse; at the step's start, the state the carried totals give (prepare).
     FrictionState friction = FrictionState::None;
     // ... and what only an impulse needs.
     int manifold = 0;
@@ -98,6 +99,7 @@ class MicroCollisionSolver : public ContactSolver {
   bool applyPairChange(const StepContext& context, const PointState& worst, int iteration);
   void afterImpulse(const StepContext& context, const PointState& state);
   double severity(const PointState& state) const;
+  bool toBounce(const PointState& state) const;
   int worstVelocityPoint() const;
   void recordRound();
   bool stillProgressing() const;
