@@ -109,6 +109,7 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
                                       {"backtrack", &s.activeSet.backtrack},
                                       {"regularization", &s.activeSet.regularization},
                                       {"refinements", &s.activeSet.refinements},
+                                      {"refinement_tolerance", &s.activeSet.refinementTolerance},
                                       {"flip_tolerance", &s.activeSet.flipTolerance}};
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);

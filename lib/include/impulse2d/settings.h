@@ -251,9 +251,14 @@ struct ActiveSetSettings {
   /// of redundant contacts (a box face's two points, a pyramid) regular. The shift of the
   /// velocities it causes is taken out again by `refinements` solves centred on the last answer.
   double regularization = 1e-8;
-  /// Solves per factorization that take the regularization's shift out (proximal point steps;
-  /// each removes all but about `regularization` of what is left).
+  /// Most corrections on fresh factors that take the regularization's shift out (proximal point
+  /// steps; each removes all but about `regularization` of what is left, so one usually does).
+  /// On kept factors the corrections may go on for up to keptRounds.
   int refinements = 3;
+  /// The corrections stop once the residual of the unregularized system is below this fraction
+  /// of |b| + |A||x|: a thousandth of residualTolerance, and above the floor that a pile's
+  /// redundant rows leave (about 1e-14, rising slowly as a resting pyramid settles).
+  double refinementTolerance = 1e-12;
   /// A condition counts as violated beyond this fraction of the island's impulse scale.
   double flipTolerance = 1e-12;
   /// The factors of each island's last factorized system are kept, and a step's first system of

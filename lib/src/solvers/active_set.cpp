@@ -327,13 +327,18 @@ bool KeptFactorization::prepare(const Sparse& system, const Eigen::VectorXd& shi
   shift_ = shift;
   settings_ = settings;
   fresh_ = false;
-  if (!reuse || !sameSize) return factorize();
   Eigen::VectorXd sums = Eigen::VectorXd::Zero(system_.rows());
   for (int c = 0; c < system_.outerSize(); ++c) {
     for (Sparse::InnerIterator it(system_, c); it; ++it) sums(it.row()) += std::abs(it.value());
   }
   rowSum_ = sums.maxCoeff();
+  if (!reuse || !sameSize) return factorize();
   return true;
+}
+
+/// The scale of a residual of A x = rhs: |rhs| + |A||x| (largest entries, largest row sum).
+double KeptFactorization::scale(const Eigen::VectorXd& rhs, const Eigen::VectorXd& x) const {
+  return rhs.cwiseAbs().maxCoeff() + rowSum_ * x.cwiseAbs().maxCoeff();
 }
 
 bool KeptFactorization::factorize() {
@@ -361,8 +366,7 @@ std::pair<double, double> givens(double a, double b) {
 bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
   const int rounds = settings_.keptRounds;
   x = factors_->lu.solve(rhs);
-  const double tolerance =
-      settings_.keptTolerance * (rhs.cwiseAbs().maxCoeff() + rowSum_ * x.cwiseAbs().maxCoeff());
+  const double tolerance = settings_.keptTolerance * scale(rhs, x);
   const Eigen::VectorXd residual = rhs - system_ * x;
   const double beta = residual.norm();
   if (residual.cwiseAbs().maxCoeff() <= tolerance) return true;
@@ -402,23 +406,32 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
   return false;
 }
 
-/// One solve of A x = rhs, then `refinements` solves centred on the last answer
-/// (J u + r(λ − λ_last) = target: a proximal point step, the velocity change W + r stays
-/// positive definite), so the velocity rows end exact while redundant contacts keep the split
-/// the first solve chose. Each solve on the fresh factors, or by GMRES on kept ones.
+/// x with A₀x = rhs, A₀ the system without its regularization A − S: one solve of A x = rhs
+/// (on the fresh factors, or by GMRES on kept ones), then up to `refinements` corrections
+/// x += K⁻¹(rhs − A₀x) by the factors K, until A₀'s residual is at round-off. On fresh factors
+/// (K = A) each correction is a proximal point step, the solve of A x' = rhs + S x, so the
+/// velocity rows end exact while redundant contacts keep the split the first solve chose. On kept
+/// factors K only approximates A and each correction still shrinks the residual by about
+/// |K⁻¹(A − K)| + |S|: one correction instead of a GMRES solve per proximal step. False if a solve
+/// on kept factors does not reach round-off.
 bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
-  const auto solveOnce = [this](const Eigen::VectorXd& b, Eigen::VectorXd& out) {
-    if (!fresh_) return solveOnKeptFactors(b, out);
-    out = factors_->lu.solve(b);
-    return true;
-  };
-  if (!solveOnce(rhs, x)) return false;
-  for (int k = 0; k < settings_.refinements; ++k) {
-    Eigen::VectorXd centred = rhs;
-    centred.tail(shift_.size()) += shift_.cwiseProduct(x.tail(shift_.size()));
-    if (!solveOnce(centred, x)) return false;
+  if (fresh_) {
+    x = factors_->lu.solve(rhs);
+  } else if (!solveOnKeptFactors(rhs, x)) {
+    return false;
   }
-  return true;
+  const Eigen::Index impulses = shift_.size();
+  const int corrections = fresh_ ? settings_.refinements : settings_.keptRounds;
+  for (int k = 0; k <= corrections; ++k) {
+    Eigen::VectorXd residual = rhs - system_ * x;
+    residual.tail(impulses) += shift_.cwiseProduct(x.tail(impulses));
+    if (residual.cwiseAbs().maxCoeff() <= settings_.refinementTolerance * scale(rhs, x)) {
+      return true;
+    }
+    if (k == corrections) break;
+    x += factors_->lu.solve(residual);
+  }
+  return fresh_;
 }
 
 Eigen::VectorXd KeptFactorization::solve(const Eigen::VectorXd& rhs) {
