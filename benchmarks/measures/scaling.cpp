@@ -74,10 +74,14 @@ void measureScaling(std::vector<ScalingPoint>& points, ProgressBar& progress) {
   }
 }
 
-double fittedExponent(const std::vector<ScalingPoint>& points, const std::string& solver) {
+double fittedExponent(const std::vector<ScalingPoint>& points, const std::string& solver,
+                      int maximumBoxes) {
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const ScalingPoint& point : points) {
-    if (point.solver != solver || !point.measured || point.boxes < kFitMinimumBoxes) continue;
+    if (point.solver != solver || !point.measured || point.boxes < kFitMinimumBoxes ||
+        point.boxes > maximumBoxes) {
+      continue;
+    }
     const double x = std::log(point.boxes), y = std::log(point.microsecondsPerStep);
     n += 1;
     sx += x;
@@ -118,6 +122,11 @@ void printScalingTable(const std::vector<ScalingPoint>& points) {
   std::printf("\n| fitted exponent (≥ %d boxes) |", kFitMinimumBoxes);
   for (const std::string& solver : kScalingSolvers) {
     std::printf(" %.2f |", fittedExponent(points, solver));
+  }
+  std::printf("\n| fitted exponent (%d to %d boxes: 9 to 40 rows) |", kFitMinimumBoxes,
+              kRangeMaximumBoxes);
+  for (const std::string& solver : kScalingSolvers) {
+    std::printf(" %.2f |", fittedExponent(points, solver, kRangeMaximumBoxes));
   }
   std::printf("\n");
   for (const ScalingPoint& p : points) {
