@@ -249,7 +249,8 @@ struct ActiveSetSettings {
   bool backtrack = true;
   /// Tikhonov term on each velocity row, relative to its Delassus diagonal: it makes the system
   /// of redundant contacts (a box face's two points, a pyramid) regular. The shift of the
-  /// velocities it causes is taken out again by `refinements` solves centred on the last answer.
+  /// velocities it causes is taken out again by corrections centred on the last answer
+  /// (`refinements`).
   double regularization = 1e-8;
   /// Most corrections on fresh factors that take the regularization's shift out (proximal point
   /// steps; each removes all but about `regularization` of what is left, so one usually does).
@@ -265,8 +266,9 @@ struct ActiveSetSettings {
   /// the same size is first solved by GMRES preconditioned by them (KeptFactorization): a
   /// resting pile then needs no factorization a step. Off: every system is factorized.
   bool keepFactors = true;
-  /// GMRES rounds on kept factors before the system is factorized after all: each costs about
-  /// 1/30 of a factorization of a 20-row pyramid's system.
+  /// GMRES rounds on kept factors before the system is factorized after all, and then at most as
+  /// many corrections that take the regularization out: each costs one solve with the factors,
+  /// about 1/30 of a factorization of a 20-row pyramid's system.
   int keptRounds = 8;
   /// A solve on kept factors is done once the residual of A x = b is below this fraction of
   /// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.

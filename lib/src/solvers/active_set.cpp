@@ -337,7 +337,8 @@ bool KeptFactorization::prepare(const Sparse& system, const Eigen::VectorXd& shi
 }
 
 /// The scale of a residual of A x = rhs: |rhs| + |A||x| (largest entries, largest row sum).
-double KeptFactorization::scale(const Eigen::VectorXd& rhs, const Eigen::VectorXd& x) const {
+double KeptFactorization::residualScale(const Eigen::VectorXd& rhs,
+                                        const Eigen::VectorXd& x) const {
   return rhs.cwiseAbs().maxCoeff() + rowSum_ * x.cwiseAbs().maxCoeff();
 }
 
@@ -366,7 +367,7 @@ std::pair<double, double> givens(double a, double b) {
 bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
   const int rounds = settings_.keptRounds;
   x = factors_->lu.solve(rhs);
-  const double tolerance = settings_.keptTolerance * scale(rhs, x);
+  const double tolerance = settings_.keptTolerance * residualScale(rhs, x);
   const Eigen::VectorXd residual = rhs - system_ * x;
   const double beta = residual.norm();
   if (residual.cwiseAbs().maxCoeff() <= tolerance) return true;
@@ -406,14 +407,15 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
   return false;
 }
 
-/// x with A₀x = rhs, A₀ the system without its regularization A − S: one solve of A x = rhs
-/// (on the fresh factors, or by GMRES on kept ones), then up to `refinements` corrections
-/// x += K⁻¹(rhs − A₀x) by the factors K, until A₀'s residual is at round-off. On fresh factors
+/// x with A₀x = rhs, A₀ the system without its regularization S (A = A₀ + S): one solve of
+/// A x = rhs (on the fresh factors, or by GMRES on kept ones), then corrections
+/// x += K⁻¹(rhs − A₀x) by the factors K until A₀'s residual is below refinementTolerance of its
+/// scale: at most `refinements` on fresh factors, `keptRounds` on kept ones. On fresh factors
 /// (K = A) each correction is a proximal point step, the solve of A x' = rhs + S x, so the
 /// velocity rows end exact while redundant contacts keep the split the first solve chose. On kept
 /// factors K only approximates A and each correction still shrinks the residual by about
-/// |K⁻¹(A − K)| + |S|: one correction instead of a GMRES solve per proximal step. False if a solve
-/// on kept factors does not reach round-off.
+/// |K⁻¹(A − K)| + |S|: one correction instead of a GMRES solve per proximal step. False if a
+/// solve on kept factors does not reach its tolerance (the caller then factorizes).
 bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
   if (fresh_) {
     x = factors_->lu.solve(rhs);
@@ -422,16 +424,15 @@ bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorX
   }
   const Eigen::Index impulses = shift_.size();
   const int corrections = fresh_ ? settings_.refinements : settings_.keptRounds;
-  for (int k = 0; k <= corrections; ++k) {
+  for (int k = 0;; ++k) {
     Eigen::VectorXd residual = rhs - system_ * x;
     residual.tail(impulses) += shift_.cwiseProduct(x.tail(impulses));
-    if (residual.cwiseAbs().maxCoeff() <= settings_.refinementTolerance * scale(rhs, x)) {
+    if (residual.cwiseAbs().maxCoeff() <= settings_.refinementTolerance * residualScale(rhs, x)) {
       return true;
     }
-    if (k == corrections) break;
+    if (k == corrections) return fresh_;
     x += factors_->lu.solve(residual);
   }
-  return fresh_;
 }
 
 Eigen::VectorXd KeptFactorization::solve(const Eigen::VectorXd& rhs) {

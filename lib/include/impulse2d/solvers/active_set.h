@@ -99,7 +99,7 @@ class KeptFactorization {
   bool factorize();
   bool solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
   bool solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
-  double scale(const Eigen::VectorXd& rhs, const Eigen::VectorXd& x) const;
+  double residualScale(const Eigen::VectorXd& rhs, const Eigen::VectorXd& x) const;
 
   std::unique_ptr<Factors> factors_;
   Eigen::SparseMatrix<double> system_;  ///< A, the system solve() answers
