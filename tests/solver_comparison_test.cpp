@@ -107,6 +107,15 @@ TEST_CASE("a disk with enough friction rolls with a = (2/3) g sin θ within 2%",
 
 TEST_CASE("a resting pyramid gains no energy over 10 s", "[comparison][pyramid][energy]") {
   constexpr int kRows = 5;
+  // Micro's velocity resolution stops once no point needs a change above its velocity epsilon,
+  // so a point may be left separating at up to ε: a box k contacts above the ground may rise at
+  // up to k·ε for one step. The bound: Σ m g k ε dt over the boxes (a 5-row pyramid: 35 box
+  // levels, 5.8e-5 J of 275 J). The other methods stop at round-off: the sum over 15 boxes of
+  // energies of order 10 J.
+  double boxLevels = 0.0;
+  for (int row = 0; row < kRows; ++row) boxLevels += (kRows - row) * (row + 1);
+  const double microBound =
+      kBoxMass * kGravity * MicroCollisionSettings{}.velocityEpsilon * kDt * boxLevels;
   for (const std::string& method : kMethods) {
     auto world = buildWorld(pyramidScene(method, kRows, 0.6));
     const double initial = kineticEnergy(*world) + potentialEnergy(*world);
@@ -116,7 +125,7 @@ TEST_CASE("a resting pyramid gains no energy over 10 s", "[comparison][pyramid][
       largest = std::max(largest, kineticEnergy(*world) + potentialEnergy(*world));
     }
     INFO(method << ": initial " << initial << " J, largest " << largest << " J");
-    // Round-off of the sum over 15 boxes of energies of order 10 J.
-    CHECK(largest - initial < 1e-9 * std::abs(initial));
+    const double roundOff = 1e-9 * std::abs(initial);
+    CHECK(largest - initial < roundOff + (method == "micro" ? microBound : 0.0));
   }
 }

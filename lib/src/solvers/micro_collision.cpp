@@ -339,7 +339,7 @@ double MicroCollisionSolver::severity(const PointState& state) const {
   return std::max(std::abs(normalPart(desired)), slip);
 }
 
-int MicroCollisionSolver::worstVelocityPoint() const {
+int MicroCollisionSolver::worstVelocityPoint() {
   return queue_.empty() ? -1 : queue_.worst();
 }
 
@@ -541,7 +541,7 @@ double MicroCollisionSolver::penetrationNow(const PointState& state) const {
       .dot(state.normal);
 }
 
-int MicroCollisionSolver::worstPenetration() const {
+int MicroCollisionSolver::worstPenetration() {
   return queue_.empty() ? -1 : queue_.worst();
 }
 

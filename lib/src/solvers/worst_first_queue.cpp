@@ -7,33 +7,52 @@ namespace impulse2d {
 
 void WorstFirstQueue::reset(const std::vector<double>& keys, double threshold) {
   threshold_ = threshold;
+  keys_ = keys;
   heap_.clear();
   waitingTotal_ = 0.0;
+  waiting_ = 0;
   slotOf_.assign(keys.size(), kOutside);
   for (int item = 0; item < int(keys.size()); ++item) {
     if (keys[item] <= threshold_) continue;
     place(int(heap_.size()), {keys[item], item});
     waitingTotal_ += keys[item];
+    ++waiting_;
   }
   for (int slot = int(heap_.size()) / 2 - 1; slot >= 0; --slot) siftDown(slot, heap_[slot]);
 }
 
 void WorstFirstQueue::update(int item, double key) {
+  const double old = keys_[item];
+  keys_[item] = key;
+  if (old > threshold_) {
+    waitingTotal_ -= old;
+    --waiting_;
+  }
+  if (key > threshold_) {
+    waitingTotal_ += key;
+    ++waiting_;
+  }
   const int slot = slotOf_[item];
   if (slot == kOutside) {
     if (key > threshold_) push({key, item});
-    return;
-  }
-  waitingTotal_ -= heap_[slot].key;
-  if (key <= threshold_) {
-    remove(slot);
-    return;
-  }
-  waitingTotal_ += key;
-  if (key > heap_[slot].key) {
+  } else if (key > heap_[slot].bound) {
     siftUp(slot, {key, item});
-  } else {
-    siftDown(slot, {key, item});
+  }
+}
+
+// Until the top entry's bound is its item's key: an item whose key fell is moved down to its
+// place, or out if it no longer waits. Every other bound is at least its item's key, so the top
+// is then the item with the largest key.
+void WorstFirstQueue::settle() {
+  while (!heap_.empty()) {
+    const Entry top = heap_[0];
+    const double key = keys_[top.item];
+    if (key == top.bound) return;
+    if (key > threshold_) {
+      siftDown(0, {key, top.item});
+    } else {
+      remove(0);
+    }
   }
 }
 
@@ -48,7 +67,7 @@ void WorstFirstQueue::place(int slot, const Entry& entry) {
 void WorstFirstQueue::siftUp(int slot, Entry entry) {
   while (slot > 0) {
     const int parent = (slot - 1) / kArity;
-    if (!(entry.key > heap_[parent].key)) break;
+    if (!(entry.bound > heap_[parent].bound)) break;
     place(slot, heap_[parent]);
     slot = parent;
   }
@@ -63,9 +82,9 @@ void WorstFirstQueue::siftDown(int slot, Entry entry) {
     if (first >= count) break;
     int child = first;
     for (int other = first + 1; other < std::min(first + kArity, count); ++other) {
-      if (heap_[other].key > heap_[child].key) child = other;
+      if (heap_[other].bound > heap_[child].bound) child = other;
     }
-    if (!(heap_[child].key > entry.key)) break;
+    if (!(heap_[child].bound > entry.bound)) break;
     place(slot, heap_[child]);
     slot = child;
   }
@@ -73,7 +92,6 @@ void WorstFirstQueue::siftDown(int slot, Entry entry) {
 }
 
 void WorstFirstQueue::push(const Entry& entry) {
-  waitingTotal_ += entry.key;
   heap_.push_back(entry);
   siftUp(int(heap_.size()) - 1, entry);
 }
@@ -84,7 +102,7 @@ void WorstFirstQueue::remove(int slot) {
   const Entry last = heap_.back();
   heap_.pop_back();
   if (slot == int(heap_.size())) return;
-  if (slot > 0 && last.key > heap_[(slot - 1) / kArity].key) {
+  if (slot > 0 && last.bound > heap_[(slot - 1) / kArity].bound) {
     siftUp(slot, last);
   } else {
     siftDown(slot, last);

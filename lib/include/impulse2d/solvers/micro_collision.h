@@ -45,14 +45,15 @@ class MicroCollisionSolver : public ContactSolver {
       sine = std::sin(angle);
     }
   };
-  struct PointState {
+  /// Aligned so that what the penetration phase reads fills one cache line.
+  struct alignas(64) PointState {
     // What the penetration phase reads, together ...
     int bodyA = 0;
     int bodyB = 0;
+    double penetration = 0.0;     ///< m, kept current while bodies move
     Vec2 normal = Vec2::Zero();   ///< from A to B
     Vec2 anchorA = Vec2::Zero();  ///< the point on A's surface, in A's frame
     Vec2 anchorB = Vec2::Zero();  ///< the point on B's surface, in B's frame
-    double penetration = 0.0;     ///< m, kept current while bodies move
     // ... then what the velocity phase adds ...
     Vec2 armA = Vec2::Zero();             ///< contact point minus A's centre (fixed while solving)
     Vec2 armB = Vec2::Zero();             ///< contact point minus B's centre
@@ -100,7 +101,7 @@ class MicroCollisionSolver : public ContactSolver {
   void afterImpulse(const StepContext& context, const PointState& state);
   double severity(const PointState& state) const;
   bool toBounce(const PointState& state) const;
-  int worstVelocityPoint() const;
+  int worstVelocityPoint();
   void recordRound();
   bool stillProgressing() const;
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
@@ -108,7 +109,7 @@ class MicroCollisionSolver : public ContactSolver {
   void applyVelocityChange(const StepContext& context, int index, int iteration);
   void refreshContactVelocities(const StepContext& context, int bodyIndex, int refreshedBody);
 
-  int worstPenetration() const;
+  int worstPenetration();
   void resolvePenetration(const StepContext& context, int index, int iteration);
   void resolvePoint(const StepContext& context, int index, int iteration);
   int otherPoint(int index) const;
