@@ -13,7 +13,6 @@ namespace impulse2d {
 namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
-using Triplets = std::vector<Eigen::Triplet<double>>;
 
 /// A set of states solved this often again means the flips cycle: the flip rule's counters may
 /// send a second visit elsewhere, a third no more.
@@ -102,72 +101,144 @@ Eigen::VectorXd gaussSeidelGuess(const IslandProblem& problem, const Eigen::Vect
   return impulses;
 }
 
-/// The triplets of u − M⁻¹Jᵀλ = u₀: fixed for the island, whatever the states.
-void addBodyRows(const IslandProblem& problem, Triplets& triplets) {
-  const int bodyUnknowns = static_cast<int>(problem.velocity.size());
-  for (int r = 0; r < bodyUnknowns; ++r) triplets.emplace_back(r, r, 1.0);
-  for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
-    const IslandPoint& point = problem.points[static_cast<size_t>(i)];
-    for (int axis = 0; axis < 2; ++axis) {
+/// The KKT system of one guess of the states, assembled column by column in Eigen's compressed
+/// form (each column's rows in increasing order, as setFromTriplets would leave them, without
+/// its sort). Unknowns: 3 per body (vx, vy, ω), then 2 per point (λn, λt). Rows:
+///   body rows       u − M⁻¹Jᵀλ = u₀, the same whatever the states;
+///   point rows      separated: λn = 0, λt = 0; otherwise J u + r λ = target along the normal,
+///                   and along the tangent J u + r λ = 0 (sticking) or λt ∓ μλn = 0 (sliding);
+/// r, the regularization, is kept in `shift` so solveProximal can take it out again.
+class SystemAssembly {
+ public:
+  explicit SystemAssembly(const IslandProblem& problem)
+      : problem_(problem),
+        bodyUnknowns_(static_cast<int>(problem.velocity.size())),
+        pointsOfBody_(static_cast<size_t>(bodyUnknowns_ / 3)) {
+    for (int i = 0; i < pointCount(); ++i) {
       for (int side = 0; side < 2; ++side) {
-        const int body = point.body[static_cast<size_t>(side)];
-        if (body < 0) continue;
-        const Eigen::Vector3d& row =
-            point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)];
-        for (int c = 0; c < 3; ++c) {
-          triplets.emplace_back(3 * body + c, bodyUnknowns + 2 * i + axis,
-                                -problem.inverseMass(3 * body + c) * row(c));
-        }
+        const int body = point(i).body[static_cast<size_t>(side)];
+        if (body >= 0) pointsOfBody_[static_cast<size_t>(body)].push_back({i, side});
       }
     }
   }
-}
 
-/// The row of a point's velocity along an axis: J u + r λ (r, the regularization, is kept in
-/// `shift` so solveProximal can take it out again).
-void addVelocityRow(const IslandProblem& problem, int i, int axis, double regularization,
-                    Triplets& triplets, Eigen::VectorXd& shift) {
-  const IslandPoint& point = problem.points[static_cast<size_t>(i)];
-  const int bodyUnknowns = static_cast<int>(problem.velocity.size());
-  const int row = bodyUnknowns + 2 * i + axis;
-  for (int side = 0; side < 2; ++side) {
-    const int body = point.body[static_cast<size_t>(side)];
-    if (body < 0) continue;
-    const Eigen::Vector3d& coefficients =
-        point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)];
-    for (int c = 0; c < 3; ++c) triplets.emplace_back(row, 3 * body + c, coefficients(c));
+  /// The system for `states`; rhs and shift are filled alongside.
+  Sparse assemble(const std::vector<ContactState>& states, const Eigen::VectorXd& diagonal,
+                  double regularization, Eigen::VectorXd& rhs, Eigen::VectorXd& shift) const {
+    const int size = bodyUnknowns_ + 2 * pointCount();
+    rhs = Eigen::VectorXd::Zero(size);
+    rhs.head(bodyUnknowns_) = problem_.velocity;
+    shift = Eigen::VectorXd::Zero(2 * pointCount());
+    Sparse system(size, size);
+    system.resizeNonZeros(countEntries(states));
+    Column column{system.outerIndexPtr(), system.innerIndexPtr(), system.valuePtr(), 0};
+    for (int c = 0; c < bodyUnknowns_; ++c) addBodyColumn(c, states, column);
+    for (int i = 0; i < pointCount(); ++i) {
+      addPointColumns(i, states, diagonal, regularization, rhs, shift, column);
+    }
+    return system;
   }
-  triplets.emplace_back(row, row, regularization);
-  shift(2 * i + axis) = regularization;
-}
 
-/// The point rows for the given states, their right-hand side and regularization.
-void addPointRows(const IslandProblem& problem, const std::vector<ContactState>& states,
-                  const Eigen::VectorXd& diagonal, double regularization, Triplets& triplets,
-                  Eigen::VectorXd& rhs, Eigen::VectorXd& shift) {
-  const int bodyUnknowns = static_cast<int>(problem.velocity.size());
-  for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
-    const IslandPoint& point = problem.points[static_cast<size_t>(i)];
-    const int normal = bodyUnknowns + 2 * i;
-    const int tangent = normal + 1;
+ private:
+  struct Incidence {
+    int point;
+    int side;
+  };
+  /// Where the next entry goes while the columns are filled in order.
+  struct Column {
+    int* outer;
+    int* inner;
+    double* value;
+    int next;
+    void add(int row, double entry) {
+      inner[next] = row;
+      value[next++] = entry;
+    }
+    void close(int column) { outer[column + 1] = next; }
+  };
+
+  const IslandPoint& point(int i) const { return problem_.points[static_cast<size_t>(i)]; }
+  int pointCount() const { return static_cast<int>(problem_.points.size()); }
+  static int velocityRows(ContactState state) {
+    if (state == ContactState::Separated) return 0;
+    return state == ContactState::Sticking ? 2 : 1;
+  }
+
+  int countEntries(const std::vector<ContactState>& states) const {
+    int entries = bodyUnknowns_;
+    for (int i = 0; i < pointCount(); ++i) {
+      const ContactState state = states[static_cast<size_t>(i)];
+      const int bodies = (point(i).body[0] >= 0) + (point(i).body[1] >= 0);
+      entries += 3 * bodies * (2 + velocityRows(state));  // M⁻¹Jᵀ columns, J rows
+      entries += state == ContactState::Separated || state == ContactState::Sticking ? 2 : 3;
+    }
+    return entries;
+  }
+
+  /// Column c of a body unknown: its identity entry, then J's entries of the velocity rows of
+  /// the points it touches, in the points' order.
+  void addBodyColumn(int c, const std::vector<ContactState>& states, Column& column) const {
+    column.add(c, 1.0);
+    for (const Incidence& incidence : pointsOfBody_[static_cast<size_t>(c / 3)]) {
+      const int rows = velocityRows(states[static_cast<size_t>(incidence.point)]);
+      for (int axis = 0; axis < rows; ++axis) {
+        const Eigen::Vector3d& coefficients =
+            point(incidence.point)
+                .jacobian[static_cast<size_t>(axis)][static_cast<size_t>(incidence.side)];
+        column.add(bodyUnknowns_ + 2 * incidence.point + axis, coefficients(c % 3));
+      }
+    }
+    column.close(c);
+  }
+
+  /// The columns of a point's λn and λt: −M⁻¹Jᵀ in the rows of its bodies (in increasing
+  /// order), then its own rows.
+  void addPointColumns(int i, const std::vector<ContactState>& states,
+                       const Eigen::VectorXd& diagonal, double regularization, Eigen::VectorXd& rhs,
+                       Eigen::VectorXd& shift, Column& column) const {
+    const IslandPoint& p = point(i);
     const ContactState state = states[static_cast<size_t>(i)];
-    if (state == ContactState::Separated) {
-      triplets.emplace_back(normal, normal, 1.0);
-      triplets.emplace_back(tangent, tangent, 1.0);
-      continue;
+    const int normal = bodyUnknowns_ + 2 * i;
+    const int tangent = normal + 1;
+    const std::array<int, 2> sides = p.body[1] >= 0 && (p.body[0] < 0 || p.body[1] < p.body[0])
+                                         ? std::array{1, 0}
+                                         : std::array{0, 1};
+    for (int axis = 0; axis < 2; ++axis) {
+      for (const int side : sides) {
+        const int body = p.body[static_cast<size_t>(side)];
+        if (body < 0) continue;
+        const Eigen::Vector3d& row =
+            p.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)];
+        for (int c = 0; c < 3; ++c) {
+          column.add(3 * body + c, -problem_.inverseMass(3 * body + c) * row(c));
+        }
+      }
+      const int own = normal + axis;
+      if (state == ContactState::Separated) {
+        column.add(own, 1.0);
+      } else if (axis == 0 || state == ContactState::Sticking) {
+        const double r = regularization * diagonal(2 * i + axis);
+        column.add(own, r);
+        shift(2 * i + axis) = r;
+      } else {
+        column.add(own, 1.0);  // sliding: λt ∓ μλn = 0
+      }
+      if (axis == 0 &&
+          (state == ContactState::SlidingPositive || state == ContactState::SlidingNegative)) {
+        const double sign = state == ContactState::SlidingPositive ? 1.0 : -1.0;
+        column.add(tangent, sign * p.friction);
+      }
+      column.close(own);
     }
-    addVelocityRow(problem, i, 0, regularization * diagonal(2 * i), triplets, shift);
-    rhs(normal) = point.targetNormalVelocity - point.staticVelocity[0];
-    if (state == ContactState::Sticking) {
-      addVelocityRow(problem, i, 1, regularization * diagonal(2 * i + 1), triplets, shift);
-      rhs(tangent) = -point.staticVelocity[1];
-    } else {
-      const double sign = state == ContactState::SlidingPositive ? 1.0 : -1.0;
-      triplets.emplace_back(tangent, tangent, 1.0);
-      triplets.emplace_back(tangent, normal, sign * point.friction);
-    }
+    if (state == ContactState::Separated) return;
+    rhs(normal) = p.targetNormalVelocity - p.staticVelocity[0];
+    if (state == ContactState::Sticking) rhs(tangent) = -p.staticVelocity[1];
   }
-}
+
+  const IslandProblem& problem_;
+  const int bodyUnknowns_;
+  std::vector<std::vector<Incidence>> pointsOfBody_;  ///< by island body, in the points' order
+};
 
 /// What the answer breaks, point by point: a pull, a closing separated point, friction beyond
 /// the cone while sticking, a slide against its friction. In N s (velocities times the point's
@@ -320,10 +391,10 @@ struct KeptFactorization::Factors {
 KeptFactorization::KeptFactorization() : factors_(std::make_unique<Factors>()) {}
 KeptFactorization::~KeptFactorization() = default;
 
-bool KeptFactorization::prepare(const Sparse& system, const Eigen::VectorXd& shift, bool reuse,
+bool KeptFactorization::prepare(Sparse system, const Eigen::VectorXd& shift, bool reuse,
                                 const ActiveSetSettings& settings) {
   const bool sameSize = factorsValid_ && system.rows() == system_.rows();
-  system_ = system;
+  system_ = std::move(system);
   shift_ = shift;
   settings_ = settings;
   fresh_ = false;
@@ -453,14 +524,10 @@ ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double
 
 ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSettings& settings,
                                KeptFactorization& kept) {
-  const int count = static_cast<int>(problem.points.size());
-  const int bodyUnknowns = static_cast<int>(problem.velocity.size());
   const Eigen::VectorXd diagonal = problem.delassus.diagonal();
   const Eigen::VectorXd free = freeVelocity(problem);
   std::vector<ContactState> states = guessStates(problem, free, diagonal, settings);
-  Triplets bodyRows;
-  addBodyRows(problem, bodyRows);
-  const int size = bodyUnknowns + 2 * count;
+  const SystemAssembly assembly(problem);
   FlipRule flips(settings);
   ActiveSetAnswer answer;
   const int factorizationsBefore = kept.factorizations();
@@ -478,15 +545,11 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
                        std::to_string(answer.factorizations) + ")";
       return answer;
     }
-    Triplets triplets = bodyRows;
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
-    rhs.head(bodyUnknowns) = problem.velocity;
-    Eigen::VectorXd shift = Eigen::VectorXd::Zero(2 * count);
-    addPointRows(problem, states, diagonal, settings.regularization, triplets, rhs, shift);
-    Sparse system(size, size);
-    system.setFromTriplets(triplets.begin(), triplets.end());
+    Eigen::VectorXd rhs;
+    Eigen::VectorXd shift;
+    Sparse system = assembly.assemble(states, diagonal, settings.regularization, rhs, shift);
     const bool prepared =
-        kept.prepare(system, shift, firstSystem && settings.keepFactors, settings);
+        kept.prepare(std::move(system), shift, firstSystem && settings.keepFactors, settings);
     firstSystem = false;
     if (prepared) answer.impulses = kept.solve(rhs);
     answer.factorizations = kept.factorizations() - factorizationsBefore;

@@ -137,6 +137,38 @@ Eigen::Vector3d jacobianRow(const Body& body, const Vec2& point, const Vec2& dir
          Eigen::Vector3d(direction.x(), direction.y(), cross(point - body.position, direction));
 }
 
+/// A square sparse matrix written column after column, each column's rows in increasing order:
+/// Eigen's compressed form directly, without the sort setFromTriplets does.
+class CompressedColumns {
+ public:
+  /// `entries`: how many the columns will hold, at most.
+  CompressedColumns(int size, size_t entries) : size_(size) {
+    outer_.reserve(static_cast<size_t>(size) + 1);
+    outer_.push_back(0);
+    inner_.reserve(entries);
+    values_.reserve(entries);
+  }
+  void add(int row, double value) {
+    inner_.push_back(row);
+    values_.push_back(value);
+  }
+  void close() { outer_.push_back(static_cast<int>(inner_.size())); }
+  Eigen::SparseMatrix<double> matrix() const {
+    Eigen::SparseMatrix<double> matrix(size_, size_);
+    matrix.resizeNonZeros(static_cast<Eigen::Index>(inner_.size()));
+    std::copy(outer_.begin(), outer_.end(), matrix.outerIndexPtr());
+    std::copy(inner_.begin(), inner_.end(), matrix.innerIndexPtr());
+    std::copy(values_.begin(), values_.end(), matrix.valuePtr());
+    return matrix;
+  }
+
+ private:
+  int size_;
+  std::vector<int> outer_;
+  std::vector<int> inner_;
+  std::vector<double> values_;
+};
+
 Eigen::Vector3d velocityOf(const Body& body) {
   return {body.velocity.x(), body.velocity.y(), body.angularVelocity};
 }
@@ -210,33 +242,57 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
 }
 
 // W = J M⁻¹ Jᵀ with J sparse (two rows per point, three columns per body, none for static ones):
-// only points that share a dynamic body couple.
+// only points that share a dynamic body couple. Built column pair by column pair: for point j,
+// the 2×2 block of every point i sharing a body b with it, Σ_b J_ib M_b⁻¹ J_jbᵀ, each product
+// formed as (J_ib J_jb) M_b⁻¹ so that W is exactly symmetric.
 void ReferenceSolver::buildDelassus(const StepContext& context) {
   const int count = static_cast<int>(rows_.size());
-  const int columns = 3 * static_cast<int>(context.bodies.size());
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<std::vector<std::pair<int, size_t>>> pointsOfBody(context.bodies.size());
   for (int i = 0; i < count; ++i) {
-    const PointRow& row = rows_[static_cast<size_t>(i)];
-    for (size_t axis = 0; axis < 2; ++axis) {
-      for (size_t side = 0; side < 2; ++side) {
-        if (row.body[side] < 0) continue;
-        for (int c = 0; c < 3; ++c) {
-          triplets.emplace_back(2 * i + static_cast<int>(axis), 3 * row.body[side] + c,
-                                row.jacobian[axis][side](c));
+    for (size_t side = 0; side < 2; ++side) {
+      const int body = rows_[static_cast<size_t>(i)].body[side];
+      if (body >= 0) pointsOfBody[static_cast<size_t>(body)].push_back({i, side});
+    }
+  }
+  size_t entries = 0;  // at most 4 per pair of points sharing a body
+  for (const auto& points : pointsOfBody) entries += 4 * points.size() * points.size();
+  CompressedColumns columns(2 * count, entries);
+  std::vector<int> coupled;
+  std::vector<Eigen::Matrix2d> blocks(static_cast<size_t>(count));
+  std::vector<int> lastColumn(static_cast<size_t>(count), -1);
+  for (int j = 0; j < count; ++j) {
+    const PointRow& column = rows_[static_cast<size_t>(j)];
+    coupled.clear();
+    for (size_t sideJ = 0; sideJ < 2; ++sideJ) {
+      if (column.body[sideJ] < 0) continue;
+      const Body& body = context.bodies[static_cast<size_t>(column.body[sideJ])];
+      const Eigen::Vector3d inverseMass(body.inverseMass, body.inverseMass, body.inverseInertia);
+      for (const auto& [i, sideI] : pointsOfBody[static_cast<size_t>(column.body[sideJ])]) {
+        Eigen::Matrix2d& block = blocks[static_cast<size_t>(i)];
+        if (lastColumn[static_cast<size_t>(i)] != j) {
+          lastColumn[static_cast<size_t>(i)] = j;
+          block.setZero();
+          coupled.push_back(i);
+        }
+        const PointRow& row = rows_[static_cast<size_t>(i)];
+        for (size_t a = 0; a < 2; ++a) {
+          for (size_t b = 0; b < 2; ++b) {
+            block(static_cast<int>(a), static_cast<int>(b)) +=
+                row.jacobian[a][sideI].cwiseProduct(column.jacobian[b][sideJ]).dot(inverseMass);
+          }
         }
       }
     }
+    std::sort(coupled.begin(), coupled.end());
+    for (int b = 0; b < 2; ++b) {
+      for (const int i : coupled) {
+        columns.add(2 * i, blocks[static_cast<size_t>(i)](0, b));
+        columns.add(2 * i + 1, blocks[static_cast<size_t>(i)](1, b));
+      }
+      columns.close();
+    }
   }
-  Eigen::SparseMatrix<double> jacobian(2 * count, columns);
-  jacobian.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::VectorXd inverseMass(columns);
-  for (size_t b = 0; b < context.bodies.size(); ++b) {
-    const Body& body = context.bodies[b];
-    inverseMass.segment<3>(3 * static_cast<int>(b)) << body.inverseMass, body.inverseMass,
-        body.inverseInertia;
-  }
-  const Eigen::SparseMatrix<double> weighted = jacobian * inverseMass.asDiagonal();
-  delassus_ = weighted * jacobian.transpose();
+  delassus_ = columns.matrix();
 }
 
 void ReferenceSolver::buildFreeVelocity(const StepContext& context) {
@@ -387,26 +443,35 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
   }
 }
 
-/// The island's rows and columns of the Delassus matrix (islands do not couple).
+/// The island's rows and columns of the Delassus matrix (islands do not couple), in the island's
+/// order of its points.
 Eigen::SparseMatrix<double> ReferenceSolver::islandDelassus(const std::vector<int>& island) const {
   std::vector<int> local(static_cast<size_t>(delassus_.rows()), -1);
   for (size_t k = 0; k < island.size(); ++k) {
     local[static_cast<size_t>(2 * island[k])] = static_cast<int>(2 * k);
     local[static_cast<size_t>(2 * island[k] + 1)] = static_cast<int>(2 * k + 1);
   }
-  std::vector<Eigen::Triplet<double>> triplets;
+  size_t entries = 0;
   for (const int point : island) {
-    for (int column = 2 * point; column < 2 * point + 2; ++column) {
-      for (Eigen::SparseMatrix<double>::InnerIterator it(delassus_, column); it; ++it) {
+    entries += static_cast<size_t>(delassus_.outerIndexPtr()[2 * point + 2] -
+                                   delassus_.outerIndexPtr()[2 * point]);
+  }
+  CompressedColumns block(2 * static_cast<int>(island.size()), entries);
+  std::vector<std::pair<int, double>> column;
+  for (const int point : island) {
+    for (int c = 2 * point; c < 2 * point + 2; ++c) {
+      column.clear();
+      for (Eigen::SparseMatrix<double>::InnerIterator it(delassus_, c); it; ++it) {
         const int row = local[static_cast<size_t>(it.row())];
-        if (row >= 0) triplets.emplace_back(row, local[static_cast<size_t>(column)], it.value());
+        if (row >= 0) column.push_back({row, it.value()});
       }
+      // In the global order already but where inFeatureIdOrder swapped a manifold's two points.
+      if (!std::is_sorted(column.begin(), column.end())) std::sort(column.begin(), column.end());
+      for (const auto& [row, value] : column) block.add(row, value);
+      block.close();
     }
   }
-  const int size = 2 * static_cast<int>(island.size());
-  Eigen::SparseMatrix<double> block(size, size);
-  block.setFromTriplets(triplets.begin(), triplets.end());
-  return block;
+  return block.matrix();
 }
 
 LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const {

@@ -85,7 +85,7 @@ class KeptFactorization {
   /// Makes A = system, whose last `shift.size()` rows carry the regularization `shift`, the
   /// system solve() answers. Factorizes at once unless `reuse` and factors of a system of the
   /// same size are kept. False (with lastError()) if that factorization fails.
-  bool prepare(const Eigen::SparseMatrix<double>& system, const Eigen::VectorXd& shift, bool reuse,
+  bool prepare(Eigen::SparseMatrix<double> system, const Eigen::VectorXd& shift, bool reuse,
                const ActiveSetSettings& settings);
   /// The impulses (the last `shift.size()` entries) of the system with its regularization taken
   /// out again by `refinements` proximal solves; NaN if a needed factorization fails.
