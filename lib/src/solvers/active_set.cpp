@@ -46,10 +46,79 @@ Eigen::VectorXd freeVelocity(const IslandProblem& problem) {
   return free;
 }
 
-/// v += column k of the Delassus matrix times delta (it is symmetric: the column is the row).
-void addColumn(const Sparse& delassus, int k, double delta, Eigen::VectorXd& velocity) {
-  for (Sparse::InnerIterator it(delassus, k); it; ++it) velocity(it.row()) += it.value() * delta;
+/// The bodies' velocity change M⁻¹Jᵀ Δλ from an impulse change along axis `axis` of point i,
+/// added to `change` (3 per body).
+void addBodyChange(const IslandProblem& problem, int i, int axis, double delta,
+                   Eigen::VectorXd& change) {
+  const IslandPoint& point = problem.points[static_cast<size_t>(i)];
+  for (int side = 0; side < 2; ++side) {
+    const int body = point.body[static_cast<size_t>(side)];
+    if (body < 0) continue;
+    change.segment<3>(3 * body) +=
+        delta * problem.inverseMass.segment<3>(3 * body).cwiseProduct(
+                    point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)]);
+  }
 }
+
+/// J u along axis `axis` of point i, for body velocities (or changes) u, 3 per body.
+double relativeVelocity(const IslandProblem& problem, int i, int axis, const Eigen::VectorXd& u) {
+  const IslandPoint& point = problem.points[static_cast<size_t>(i)];
+  double v = 0.0;
+  for (int side = 0; side < 2; ++side) {
+    const int body = point.body[static_cast<size_t>(side)];
+    if (body < 0) continue;
+    v += point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)].dot(
+        u.segment<3>(3 * body));
+  }
+  return v;
+}
+
+/// The bodies' velocity change M⁻¹Jᵀλ from the points' impulses λ (2 per point).
+Eigen::VectorXd bodyChange(const IslandProblem& problem, const Eigen::VectorXd& impulses) {
+  Eigen::VectorXd change = Eigen::VectorXd::Zero(problem.velocity.size());
+  for (int k = 0; k < impulses.size(); ++k) {
+    if (impulses(k) != 0.0) addBodyChange(problem, k / 2, k % 2, impulses(k), change);
+  }
+  return change;
+}
+
+}  // namespace
+
+Eigen::VectorXd delassusTimes(const IslandProblem& problem, const Eigen::VectorXd& impulses) {
+  const Eigen::VectorXd change = bodyChange(problem, impulses);
+  Eigen::VectorXd velocity(impulses.size());
+  for (int k = 0; k < impulses.size(); ++k) {
+    velocity(k) = relativeVelocity(problem, k / 2, k % 2, change);
+  }
+  return velocity;
+}
+
+bool needsGuessSweeps(const IslandProblem& problem, const ActiveSetSettings& settings) {
+  return std::any_of(problem.points.begin(), problem.points.end(), [&](const IslandPoint& point) {
+    return !(settings.warmStates && point.carried);
+  });
+}
+
+Eigen::VectorXd delassusDiagonal(const IslandProblem& problem) {
+  const int count = static_cast<int>(problem.points.size());
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(2 * count);
+  for (int i = 0; i < count; ++i) {
+    const IslandPoint& point = problem.points[static_cast<size_t>(i)];
+    for (int axis = 0; axis < 2; ++axis) {
+      for (int side = 0; side < 2; ++side) {
+        const int body = point.body[static_cast<size_t>(side)];
+        if (body < 0) continue;
+        const Eigen::Vector3d& row =
+            point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)];
+        diagonal(2 * i + axis) +=
+            row.cwiseProduct(row).dot(problem.inverseMass.segment<3>(3 * body));
+      }
+    }
+  }
+  return diagonal;
+}
+
+namespace {
 
 /// The guess put inside the cone: normal impulse ≥ 0, friction within μ of it.
 Eigen::VectorXd projectedGuess(const IslandProblem& problem) {
@@ -61,6 +130,11 @@ Eigen::VectorXd projectedGuess(const IslandProblem& problem) {
     impulses(2 * i + 1) = std::clamp(impulses(2 * i + 1), -limit, limit);
   }
   return impulses;
+}
+
+/// v += column k of the Delassus matrix times delta (it is symmetric: the column is the row).
+void addColumn(const Sparse& delassus, int k, double delta, Eigen::VectorXd& velocity) {
+  for (Sparse::InnerIterator it(delassus, k); it; ++it) velocity(it.row()) += it.value() * delta;
 }
 
 /// One projected Gauss–Seidel sweep; whether it changed some point's state.
@@ -365,9 +439,9 @@ std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen:
   const auto fromWarm = [&](const IslandPoint& point) {
     return settings.warmStates && point.carried;
   };
-  const bool allWarm = std::all_of(problem.points.begin(), problem.points.end(), fromWarm);
-  const Eigen::VectorXd swept =
-      allWarm ? Eigen::VectorXd() : gaussSeidelGuess(problem, free, diagonal, settings);
+  const Eigen::VectorXd swept = needsGuessSweeps(problem, settings)
+                                    ? gaussSeidelGuess(problem, free, diagonal, settings)
+                                    : Eigen::VectorXd();
   std::vector<ContactState> states(problem.points.size());
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
     const IslandPoint& point = problem.points[static_cast<size_t>(i)];
@@ -524,7 +598,7 @@ ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double
 
 ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSettings& settings,
                                KeptFactorization& kept) {
-  const Eigen::VectorXd diagonal = problem.delassus.diagonal();
+  const Eigen::VectorXd diagonal = delassusDiagonal(problem);
   const Eigen::VectorXd free = freeVelocity(problem);
   std::vector<ContactState> states = guessStates(problem, free, diagonal, settings);
   const SystemAssembly assembly(problem);
@@ -559,7 +633,7 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
       return answer;
     }
     zeroSeparated(states, answer.impulses);
-    const Eigen::VectorXd velocity = free + problem.delassus * answer.impulses;
+    const Eigen::VectorXd velocity = free + delassusTimes(problem, answer.impulses);
     const double tolerance = settings.flipTolerance * impulseScale(answer.impulses, free, diagonal);
     const std::vector<Violation> found =
         violations(problem, states, answer.impulses, velocity, diagonal, tolerance);

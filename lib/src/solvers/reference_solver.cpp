@@ -187,7 +187,7 @@ Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
   collectPoints(context);
   if (rows_.empty()) return {};
   groupIslands(context);
-  buildDelassus(context);
+  buildEffectiveMasses(context);
   buildFreeVelocity(context);
   Eigen::VectorXd impulses = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
   pushed_ = Eigen::VectorXd::Zero(impulses.size());
@@ -241,40 +241,66 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
   }
 }
 
-// W = J M⁻¹ Jᵀ with J sparse (two rows per point, three columns per body, none for static ones):
-// only points that share a dynamic body couple. Built column pair by column pair: for point j,
-// the 2×2 block of every point i sharing a body b with it, Σ_b J_ib M_b⁻¹ J_jbᵀ, each product
-// formed as (J_ib J_jb) M_b⁻¹ so that W is exactly symmetric.
-void ReferenceSolver::buildDelassus(const StepContext& context) {
-  const int count = static_cast<int>(rows_.size());
-  std::vector<std::vector<std::pair<int, size_t>>> pointsOfBody(context.bodies.size());
-  for (int i = 0; i < count; ++i) {
+// The bodies' inverse masses (3 per body, 0 for static ones) and the diagonal of the Delassus
+// matrix W = J M⁻¹ Jᵀ: what every island needs. W itself is formed only for an island Lemke
+// solves (islandDelassus) and on request (delassusMatrix); elsewhere W λ is taken through the
+// bodies (velocityChange).
+void ReferenceSolver::buildEffectiveMasses(const StepContext& context) {
+  inverseMass_.resize(3 * static_cast<int>(context.bodies.size()));
+  for (size_t b = 0; b < context.bodies.size(); ++b) {
+    const Body& body = context.bodies[b];
+    inverseMass_.segment<3>(3 * static_cast<int>(b)) << body.inverseMass, body.inverseMass,
+        body.inverseInertia;
+  }
+  diagonal_ = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
+  for (size_t i = 0; i < rows_.size(); ++i) {
+    const PointRow& row = rows_[i];
+    for (size_t axis = 0; axis < 2; ++axis) {
+      for (size_t side = 0; side < 2; ++side) {
+        if (row.body[side] < 0) continue;
+        const Eigen::Vector3d& j = row.jacobian[axis][side];
+        diagonal_(2 * static_cast<int>(i) + static_cast<int>(axis)) +=
+            j.cwiseProduct(j).dot(inverseMass_.segment<3>(3 * row.body[side]));
+      }
+    }
+  }
+}
+
+// W's rows and columns of the listed points, in their order (local point k is points[k]). Built
+// column pair by column pair: for point j, the 2×2 block of every listed point i sharing a body b
+// with it, Σ_b J_ib M_b⁻¹ J_jbᵀ, each product formed as (J_ib J_jb) M_b⁻¹ so that W is exactly
+// symmetric. Only points that share a dynamic body couple.
+Eigen::SparseMatrix<double> ReferenceSolver::delassusOf(const std::vector<int>& points) const {
+  const int count = static_cast<int>(points.size());
+  std::vector<std::vector<std::pair<int, size_t>>> pointsOfBody(
+      static_cast<size_t>(inverseMass_.size() / 3));
+  for (int k = 0; k < count; ++k) {
     for (size_t side = 0; side < 2; ++side) {
-      const int body = rows_[static_cast<size_t>(i)].body[side];
-      if (body >= 0) pointsOfBody[static_cast<size_t>(body)].push_back({i, side});
+      const int body = rows_[static_cast<size_t>(points[static_cast<size_t>(k)])].body[side];
+      if (body >= 0) pointsOfBody[static_cast<size_t>(body)].push_back({k, side});
     }
   }
   size_t entries = 0;  // at most 4 per pair of points sharing a body
-  for (const auto& points : pointsOfBody) entries += 4 * points.size() * points.size();
+  for (const auto& incident : pointsOfBody) entries += 4 * incident.size() * incident.size();
   CompressedColumns columns(2 * count, entries);
   std::vector<int> coupled;
   std::vector<Eigen::Matrix2d> blocks(static_cast<size_t>(count));
   std::vector<int> lastColumn(static_cast<size_t>(count), -1);
   for (int j = 0; j < count; ++j) {
-    const PointRow& column = rows_[static_cast<size_t>(j)];
+    const PointRow& column = rows_[static_cast<size_t>(points[static_cast<size_t>(j)])];
     coupled.clear();
     for (size_t sideJ = 0; sideJ < 2; ++sideJ) {
-      if (column.body[sideJ] < 0) continue;
-      const Body& body = context.bodies[static_cast<size_t>(column.body[sideJ])];
-      const Eigen::Vector3d inverseMass(body.inverseMass, body.inverseMass, body.inverseInertia);
-      for (const auto& [i, sideI] : pointsOfBody[static_cast<size_t>(column.body[sideJ])]) {
+      const int body = column.body[sideJ];
+      if (body < 0) continue;
+      const Eigen::Vector3d inverseMass = inverseMass_.segment<3>(3 * body);
+      for (const auto& [i, sideI] : pointsOfBody[static_cast<size_t>(body)]) {
         Eigen::Matrix2d& block = blocks[static_cast<size_t>(i)];
         if (lastColumn[static_cast<size_t>(i)] != j) {
           lastColumn[static_cast<size_t>(i)] = j;
           block.setZero();
           coupled.push_back(i);
         }
-        const PointRow& row = rows_[static_cast<size_t>(i)];
+        const PointRow& row = rows_[static_cast<size_t>(points[static_cast<size_t>(i)])];
         for (size_t a = 0; a < 2; ++a) {
           for (size_t b = 0; b < 2; ++b) {
             block(static_cast<int>(a), static_cast<int>(b)) +=
@@ -292,7 +318,43 @@ void ReferenceSolver::buildDelassus(const StepContext& context) {
       columns.close();
     }
   }
-  delassus_ = columns.matrix();
+  return columns.matrix();
+}
+
+Eigen::SparseMatrix<double> ReferenceSolver::delassusMatrix() const {
+  std::vector<int> all(rows_.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  return delassusOf(all);
+}
+
+// W λ on the rows of the listed points, from their impulses (in the layout of all points): the
+// bodies' velocity changes M⁻¹Jᵀλ, then J of them. The listed points must be whole islands (or
+// all points), which share no dynamic body with the others. Entries of other points are 0.
+Eigen::VectorXd ReferenceSolver::velocityChange(const std::vector<int>& points,
+                                                const Eigen::VectorXd& impulses) const {
+  Eigen::VectorXd bodies = Eigen::VectorXd::Zero(inverseMass_.size());
+  for (const int i : points) {
+    const PointRow& row = rows_[static_cast<size_t>(i)];
+    for (size_t side = 0; side < 2; ++side) {
+      if (row.body[side] < 0) continue;
+      bodies.segment<3>(3 * row.body[side]) +=
+          inverseMass_.segment<3>(3 * row.body[side])
+              .cwiseProduct(row.jacobian[0][side] * impulses(2 * i) +
+                            row.jacobian[1][side] * impulses(2 * i + 1));
+    }
+  }
+  Eigen::VectorXd change = Eigen::VectorXd::Zero(impulses.size());
+  for (const int i : points) {
+    const PointRow& row = rows_[static_cast<size_t>(i)];
+    for (size_t axis = 0; axis < 2; ++axis) {
+      for (size_t side = 0; side < 2; ++side) {
+        if (row.body[side] < 0) continue;
+        change(2 * i + static_cast<int>(axis)) +=
+            row.jacobian[axis][side].dot(bodies.segment<3>(3 * row.body[side]));
+      }
+    }
+  }
+  return change;
 }
 
 void ReferenceSolver::buildFreeVelocity(const StepContext& context) {
@@ -436,7 +498,7 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
     push.segment<2>(2 * i) = impulses.segment<2>(2 * i);
     push(2 * i) *= 1.0 + restitution[k];
   }
-  freeVelocity_ += delassus_ * push;
+  freeVelocity_ += velocityChange(island, push);
   pushed_ += push;
   if (!solveIslandOnce(context, island, largeIslands, impulses, failure)) {
     fail(newtonFailure + "; in two solves, restitution: " + failure);
@@ -446,32 +508,7 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
 /// The island's rows and columns of the Delassus matrix (islands do not couple), in the island's
 /// order of its points.
 Eigen::SparseMatrix<double> ReferenceSolver::islandDelassus(const std::vector<int>& island) const {
-  std::vector<int> local(static_cast<size_t>(delassus_.rows()), -1);
-  for (size_t k = 0; k < island.size(); ++k) {
-    local[static_cast<size_t>(2 * island[k])] = static_cast<int>(2 * k);
-    local[static_cast<size_t>(2 * island[k] + 1)] = static_cast<int>(2 * k + 1);
-  }
-  size_t entries = 0;
-  for (const int point : island) {
-    entries += static_cast<size_t>(delassus_.outerIndexPtr()[2 * point + 2] -
-                                   delassus_.outerIndexPtr()[2 * point]);
-  }
-  CompressedColumns block(2 * static_cast<int>(island.size()), entries);
-  std::vector<std::pair<int, double>> column;
-  for (const int point : island) {
-    for (int c = 2 * point; c < 2 * point + 2; ++c) {
-      column.clear();
-      for (Eigen::SparseMatrix<double>::InnerIterator it(delassus_, c); it; ++it) {
-        const int row = local[static_cast<size_t>(it.row())];
-        if (row >= 0) column.push_back({row, it.value()});
-      }
-      // In the global order already but where inFeatureIdOrder swapped a manifold's two points.
-      if (!std::is_sorted(column.begin(), column.end())) std::sort(column.begin(), column.end());
-      for (const auto& [row, value] : column) block.add(row, value);
-      block.close();
-    }
-  }
-  return block.matrix();
+  return delassusOf(island);
 }
 
 LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const {
@@ -573,7 +610,7 @@ ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
         body.inverseInertia;
     problem.velocity.segment<3>(3 * static_cast<int>(k)) = velocityOf(body);
   }
-  problem.delassus = islandDelassus(island);
+  if (needsGuessSweeps(problem, settings_.activeSet)) problem.delassus = islandDelassus(island);
   while (static_cast<int>(keptFactors_.size()) <= ordinal) {
     keptFactors_.push_back(std::make_unique<KeptFactorization>());
   }
@@ -593,22 +630,14 @@ double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
 // relative to their impulse scale.
 double ReferenceSolver::residualOver(const std::vector<int>& points,
                                      const Eigen::VectorXd& impulses) const {
-  const Eigen::VectorXd diagonal = delassus_.diagonal();
-  // v = v₀ + Wλ on the listed rows only (W is symmetric: row r is column r).
-  const auto velocity = [&](int r) {
-    double v = freeVelocity_(r);
-    for (Eigen::SparseMatrix<double>::InnerIterator it(delassus_, r); it; ++it) {
-      v += it.value() * impulses(it.row());
-    }
-    return v;
-  };
+  const Eigen::VectorXd velocity = freeVelocity_ + velocityChange(points, impulses);
   double worst = 0.0;
   for (const int i : points) {
     const PointRow& row = rows_[static_cast<size_t>(i)];
     worst = std::max(
         worst, pointViolation(impulses(2 * i), impulses(2 * i + 1),
                               velocity(2 * i) - row.targetNormalVelocity, velocity(2 * i + 1),
-                              row.friction, 1.0 / diagonal(2 * i), 1.0 / diagonal(2 * i + 1)));
+                              row.friction, 1.0 / diagonal_(2 * i), 1.0 / diagonal_(2 * i + 1)));
   }
   const double scale = impulseScale(points, impulses);
   return scale > 0.0 ? worst / scale : worst;
@@ -623,12 +652,11 @@ double ReferenceSolver::residualOver(const std::vector<int>& points,
 double ReferenceSolver::impulseScale(const std::vector<int>& points,
                                      const Eigen::VectorXd& impulses) const {
   double scale = 0.0;
-  const Eigen::VectorXd diagonal = delassus_.diagonal();
   for (const int i : points) {
     const PointRow& row = rows_[static_cast<size_t>(i)];
     scale = std::max({scale, std::abs(impulses(2 * i)), std::abs(impulses(2 * i + 1)),
-                      std::abs(freeVelocity_(2 * i) - row.targetNormalVelocity) / diagonal(2 * i),
-                      std::abs(freeVelocity_(2 * i + 1)) / diagonal(2 * i + 1), row.momentum});
+                      std::abs(freeVelocity_(2 * i) - row.targetNormalVelocity) / diagonal_(2 * i),
+                      std::abs(freeVelocity_(2 * i + 1)) / diagonal_(2 * i + 1), row.momentum});
   }
   return scale;
 }

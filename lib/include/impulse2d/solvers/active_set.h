@@ -49,14 +49,31 @@ struct IslandPoint {
   ContactState lastState = ContactState::Unknown;
 };
 
-/// One island's problem: its points, its bodies and the Delassus matrix of its points.
+/// One island's problem: its points and its bodies. The solve takes W λ (W = J M⁻¹ Jᵀ, the
+/// Delassus matrix) through the bodies, J (M⁻¹ (Jᵀ λ)) (delassusTimes), at the cost of the
+/// points' Jacobian rows rather than of W's entries (about 20 coupled points a point in a pile of
+/// boxes). W itself is needed only by the projected Gauss–Seidel sweeps that guess the states of
+/// new points (needsGuessSweeps): on a degenerate pile their rounding decides the path of the
+/// first step's flips, and the same sweeps done through the bodies sent 4 of 5 time steps of
+/// pyramid40's first step on a path of 59-64 factorizations instead of 9
+/// (docs/global-reference.md).
 struct IslandProblem {
   std::vector<IslandPoint> points;
   Eigen::VectorXd inverseMass;           ///< 3 per body: 1/m, 1/m, 1/I
   Eigen::VectorXd velocity;              ///< 3 per body: (vx, vy, ω) before the solve
-  Eigen::SparseMatrix<double> delassus;  ///< 2 per point, rows (normal, tangent)
+  Eigen::SparseMatrix<double> delassus;  ///< W, 2 per point; only if needsGuessSweeps
   Eigen::VectorXd guess;                 ///< 2 per point: the impulses to start from
 };
+
+/// Whether the solve will guess some point's state by Gauss–Seidel sweeps (a point not solved
+/// last step, or warm states off), which need the problem's W.
+bool needsGuessSweeps(const IslandProblem& problem, const ActiveSetSettings& settings);
+
+/// W λ: the relative velocity change (normal, tangent) at every point from impulses λ (2 per
+/// point).
+Eigen::VectorXd delassusTimes(const IslandProblem& problem, const Eigen::VectorXd& impulses);
+/// W's diagonal: each point's inverse effective mass along its normal and its tangent.
+Eigen::VectorXd delassusDiagonal(const IslandProblem& problem);
 
 struct ActiveSetAnswer {
   bool solved = false;

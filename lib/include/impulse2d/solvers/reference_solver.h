@@ -69,8 +69,8 @@ class ReferenceSolver : public ContactSolver {
   /// The Delassus matrix of the last solve: rows/columns 2i (normal) and 2i+1 (tangent) of point
   /// i, in the order of the manifolds and their points; entry (r, c) is the relative velocity
   /// change along r from a unit impulse along c. Sparse: zero between points that share no
-  /// dynamic body.
-  const Eigen::SparseMatrix<double>& delassusMatrix() const { return delassus_; }
+  /// dynamic body. Formed on request: the solve itself forms only small islands' blocks.
+  Eigen::SparseMatrix<double> delassusMatrix() const;
 
   const ReferenceSolverSettings& settings() const { return settings_; }
 
@@ -97,7 +97,7 @@ class ReferenceSolver : public ContactSolver {
   };
 
   void collectPoints(const StepContext& context);
-  void buildDelassus(const StepContext& context);
+  void buildEffectiveMasses(const StepContext& context);
   void buildFreeVelocity(const StepContext& context);
   void groupIslands(const StepContext& context);
   /// largeIslands counts the islands given to the active set so far this step.
@@ -116,6 +116,9 @@ class ReferenceSolver : public ContactSolver {
   ActiveSetAnswer solveByActiveSet(const StepContext& context, const std::vector<int>& island,
                                    int ordinal);
   Eigen::SparseMatrix<double> islandDelassus(const std::vector<int>& island) const;
+  Eigen::SparseMatrix<double> delassusOf(const std::vector<int>& points) const;
+  Eigen::VectorXd velocityChange(const std::vector<int>& points,
+                                 const Eigen::VectorXd& impulses) const;
   Eigen::VectorXd islandImpulses(const std::vector<int>& island, const Eigen::VectorXd& z) const;
   double residualOver(const std::vector<int>& points, const Eigen::VectorXd& impulses) const;
   double impulseScale(const std::vector<int>& points, const Eigen::VectorXd& impulses) const;
@@ -124,8 +127,9 @@ class ReferenceSolver : public ContactSolver {
 
   ReferenceSolverSettings settings_;
   std::vector<PointRow> rows_;
-  Eigen::SparseMatrix<double> delassus_;  ///< 2p × 2p
-  Eigen::VectorXd freeVelocity_;          ///< 2p: (vn, vt) of each point before the solve
+  Eigen::VectorXd inverseMass_;   ///< 3 per body of the step: 1/m, 1/m, 1/I (0 if static)
+  Eigen::VectorXd diagonal_;      ///< 2p: the Delassus matrix's diagonal
+  Eigen::VectorXd freeVelocity_;  ///< 2p: (vn, vt) of each point before the solve
   /// 2p: impulses applied before the checked solve, the compression and restitution impulses of
   /// an island that bounced in two solves (freeVelocity_ includes what they do); 0 elsewhere.
   Eigen::VectorXd pushed_;
