@@ -61,7 +61,7 @@ void addBodyChange(const IslandProblem& problem, int i, int axis, double delta,
 }
 
 /// J u along axis `axis` of point i, for body velocities (or changes) u, 3 per body.
-double relativeVelocity(const IslandProblem& problem, int i, int axis, const Eigen::VectorXd& u) {
+double jacobianTimes(const IslandProblem& problem, int i, int axis, const Eigen::VectorXd& u) {
   const IslandPoint& point = problem.points[static_cast<size_t>(i)];
   double v = 0.0;
   for (int side = 0; side < 2; ++side) {
@@ -88,7 +88,7 @@ Eigen::VectorXd delassusTimes(const IslandProblem& problem, const Eigen::VectorX
   const Eigen::VectorXd change = bodyChange(problem, impulses);
   Eigen::VectorXd velocity(impulses.size());
   for (int k = 0; k < impulses.size(); ++k) {
-    velocity(k) = relativeVelocity(problem, k / 2, k % 2, change);
+    velocity(k) = jacobianTimes(problem, k / 2, k % 2, change);
   }
   return velocity;
 }

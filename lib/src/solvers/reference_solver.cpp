@@ -266,11 +266,12 @@ void ReferenceSolver::buildEffectiveMasses(const StepContext& context) {
   }
 }
 
-// W's rows and columns of the listed points, in their order (local point k is points[k]). Built
+// W's rows and columns of the listed points (an island, or all points: islands do not couple),
+// in their order (local point k is points[k]). Built
 // column pair by column pair: for point j, the 2×2 block of every listed point i sharing a body b
 // with it, Σ_b J_ib M_b⁻¹ J_jbᵀ, each product formed as (J_ib J_jb) M_b⁻¹ so that W is exactly
 // symmetric. Only points that share a dynamic body couple.
-Eigen::SparseMatrix<double> ReferenceSolver::delassusOf(const std::vector<int>& points) const {
+Eigen::SparseMatrix<double> ReferenceSolver::islandDelassus(const std::vector<int>& points) const {
   const int count = static_cast<int>(points.size());
   std::vector<std::vector<std::pair<int, size_t>>> pointsOfBody(
       static_cast<size_t>(inverseMass_.size() / 3));
@@ -324,7 +325,7 @@ Eigen::SparseMatrix<double> ReferenceSolver::delassusOf(const std::vector<int>& 
 Eigen::SparseMatrix<double> ReferenceSolver::delassusMatrix() const {
   std::vector<int> all(rows_.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  return delassusOf(all);
+  return islandDelassus(all);
 }
 
 // W λ on the rows of the listed points, from their impulses (in the layout of all points): the
@@ -503,12 +504,6 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
   if (!solveIslandOnce(context, island, largeIslands, impulses, failure)) {
     fail(newtonFailure + "; in two solves, restitution: " + failure);
   }
-}
-
-/// The island's rows and columns of the Delassus matrix (islands do not couple), in the island's
-/// order of its points.
-Eigen::SparseMatrix<double> ReferenceSolver::islandDelassus(const std::vector<int>& island) const {
-  return delassusOf(island);
 }
 
 LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const {

@@ -115,8 +115,7 @@ class ReferenceSolver : public ContactSolver {
   LcpSolution solveByLemke(const std::vector<int>& island) const;
   ActiveSetAnswer solveByActiveSet(const StepContext& context, const std::vector<int>& island,
                                    int ordinal);
-  Eigen::SparseMatrix<double> islandDelassus(const std::vector<int>& island) const;
-  Eigen::SparseMatrix<double> delassusOf(const std::vector<int>& points) const;
+  Eigen::SparseMatrix<double> islandDelassus(const std::vector<int>& points) const;
   Eigen::VectorXd velocityChange(const std::vector<int>& points,
                                  const Eigen::VectorXd& impulses) const;
   Eigen::VectorXd islandImpulses(const std::vector<int>& island, const Eigen::VectorXd& z) const;
