@@ -4,8 +4,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -51,6 +53,40 @@ std::vector<Vec2> positions(const World& world) {
 constexpr double kResidual = 1e-9;
 
 }  // namespace
+
+TEST_CASE("W λ taken through the bodies is J M⁻¹ Jᵀ λ, and W's diagonal its own", "[active_set]") {
+  // The active set never forms the Delassus matrix W = J M⁻¹ Jᵀ: it takes W λ as J (M⁻¹ (Jᵀ λ))
+  // through the bodies. An island of 3 bodies and 5 points, one of them on a static body (-1),
+  // with random Jacobian rows, masses and impulses, against W formed densely here.
+  std::mt19937 random(23);  // fixed seed: the same island every run
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  std::uniform_real_distribution<double> inverseMass(0.2, 2.0);
+  IslandProblem problem;
+  const int bodies = 3;
+  problem.inverseMass.resize(3 * bodies);
+  for (int k = 0; k < 3 * bodies; ++k) problem.inverseMass(k) = inverseMass(random);
+  problem.velocity = Eigen::VectorXd::Zero(3 * bodies);
+  const std::vector<std::array<int, 2>> pairs{{0, 1}, {0, 1}, {1, 2}, {-1, 2}, {2, 0}};
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(2 * int(pairs.size()), 3 * bodies);
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    IslandPoint point;
+    point.body = pairs[i];
+    for (size_t axis = 0; axis < 2; ++axis) {
+      for (size_t side = 0; side < 2; ++side) {
+        point.jacobian[axis][side] = Eigen::Vector3d(entry(random), entry(random), entry(random));
+        if (point.body[side] < 0) continue;
+        jacobian.block<1, 3>(2 * int(i) + int(axis), 3 * point.body[side]) =
+            point.jacobian[axis][side].transpose();
+      }
+    }
+    problem.points.push_back(point);
+  }
+  const Eigen::MatrixXd w = jacobian * problem.inverseMass.asDiagonal() * jacobian.transpose();
+  Eigen::VectorXd impulses(2 * int(pairs.size()));
+  for (int k = 0; k < impulses.size(); ++k) impulses(k) = entry(random);
+  CHECK((delassusTimes(problem, impulses) - w * impulses).cwiseAbs().maxCoeff() < 1e-12);
+  CHECK((delassusDiagonal(problem) - w.diagonal()).cwiseAbs().maxCoeff() < 1e-12);
+}
 
 TEST_CASE("the active set gives a 10-box stack the weights above it, as Lemke does",
           "[reference][active_set][stack]") {
