@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "compressed_columns.h"
+
 namespace impulse2d {
 namespace {
 
@@ -203,14 +205,12 @@ class SystemAssembly {
     rhs = Eigen::VectorXd::Zero(size);
     rhs.head(bodyUnknowns_) = problem_.velocity;
     shift = Eigen::VectorXd::Zero(2 * pointCount());
-    Sparse system(size, size);
-    system.resizeNonZeros(countEntries(states));
-    Column column{system.outerIndexPtr(), system.innerIndexPtr(), system.valuePtr(), 0};
-    for (int c = 0; c < bodyUnknowns_; ++c) addBodyColumn(c, states, column);
+    CompressedColumns columns(size, countEntries(states));
+    for (int c = 0; c < bodyUnknowns_; ++c) addBodyColumn(c, states, columns);
     for (int i = 0; i < pointCount(); ++i) {
-      addPointColumns(i, states, diagonal, regularization, rhs, shift, column);
+      addPointColumns(i, states, diagonal, regularization, rhs, shift, columns);
     }
-    return system;
+    return columns.matrix();
   }
 
  private:
@@ -218,19 +218,6 @@ class SystemAssembly {
     int point;
     int side;
   };
-  /// Where the next entry goes while the columns are filled in order.
-  struct Column {
-    int* outer;
-    int* inner;
-    double* value;
-    int next;
-    void add(int row, double entry) {
-      inner[next] = row;
-      value[next++] = entry;
-    }
-    void close(int column) { outer[column + 1] = next; }
-  };
-
   const IslandPoint& point(int i) const { return problem_.points[static_cast<size_t>(i)]; }
   int pointCount() const { return static_cast<int>(problem_.points.size()); }
   static int velocityRows(ContactState state) {
@@ -238,12 +225,12 @@ class SystemAssembly {
     return state == ContactState::Sticking ? 2 : 1;
   }
 
-  int countEntries(const std::vector<ContactState>& states) const {
-    int entries = bodyUnknowns_;
+  size_t countEntries(const std::vector<ContactState>& states) const {
+    size_t entries = static_cast<size_t>(bodyUnknowns_);
     for (int i = 0; i < pointCount(); ++i) {
       const ContactState state = states[static_cast<size_t>(i)];
       const int bodies = (point(i).body[0] >= 0) + (point(i).body[1] >= 0);
-      entries += 3 * bodies * (2 + velocityRows(state));  // M⁻¹Jᵀ columns, J rows
+      entries += static_cast<size_t>(3 * bodies * (2 + velocityRows(state)));  // M⁻¹Jᵀ, J
       entries += state == ContactState::Separated || state == ContactState::Sticking ? 2 : 3;
     }
     return entries;
@@ -251,7 +238,8 @@ class SystemAssembly {
 
   /// Column c of a body unknown: its identity entry, then J's entries of the velocity rows of
   /// the points it touches, in the points' order.
-  void addBodyColumn(int c, const std::vector<ContactState>& states, Column& column) const {
+  void addBodyColumn(int c, const std::vector<ContactState>& states,
+                     CompressedColumns& column) const {
     column.add(c, 1.0);
     for (const Incidence& incidence : pointsOfBody_[static_cast<size_t>(c / 3)]) {
       const int rows = velocityRows(states[static_cast<size_t>(incidence.point)]);
@@ -262,14 +250,14 @@ class SystemAssembly {
         column.add(bodyUnknowns_ + 2 * incidence.point + axis, coefficients(c % 3));
       }
     }
-    column.close(c);
+    column.close();
   }
 
   /// The columns of a point's λn and λt: −M⁻¹Jᵀ in the rows of its bodies (in increasing
   /// order), then its own rows.
   void addPointColumns(int i, const std::vector<ContactState>& states,
                        const Eigen::VectorXd& diagonal, double regularization, Eigen::VectorXd& rhs,
-                       Eigen::VectorXd& shift, Column& column) const {
+                       Eigen::VectorXd& shift, CompressedColumns& column) const {
     const IslandPoint& p = point(i);
     const ContactState state = states[static_cast<size_t>(i)];
     const int normal = bodyUnknowns_ + 2 * i;
@@ -302,7 +290,7 @@ class SystemAssembly {
         const double sign = state == ContactState::SlidingPositive ? 1.0 : -1.0;
         column.add(tangent, sign * p.friction);
       }
-      column.close(own);
+      column.close();
     }
     if (state == ContactState::Separated) return;
     rhs(normal) = p.targetNormalVelocity - p.staticVelocity[0];

@@ -13,6 +13,8 @@
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/position_correction.h"
 
+#include "compressed_columns.h"
+
 namespace impulse2d {
 namespace {
 
@@ -136,38 +138,6 @@ Eigen::Vector3d jacobianRow(const Body& body, const Vec2& point, const Vec2& dir
   return sign *
          Eigen::Vector3d(direction.x(), direction.y(), cross(point - body.position, direction));
 }
-
-/// A square sparse matrix written column after column, each column's rows in increasing order:
-/// Eigen's compressed form directly, without the sort setFromTriplets does.
-class CompressedColumns {
- public:
-  /// `entries`: how many the columns will hold, at most.
-  CompressedColumns(int size, size_t entries) : size_(size) {
-    outer_.reserve(static_cast<size_t>(size) + 1);
-    outer_.push_back(0);
-    inner_.reserve(entries);
-    values_.reserve(entries);
-  }
-  void add(int row, double value) {
-    inner_.push_back(row);
-    values_.push_back(value);
-  }
-  void close() { outer_.push_back(static_cast<int>(inner_.size())); }
-  Eigen::SparseMatrix<double> matrix() const {
-    Eigen::SparseMatrix<double> matrix(size_, size_);
-    matrix.resizeNonZeros(static_cast<Eigen::Index>(inner_.size()));
-    std::copy(outer_.begin(), outer_.end(), matrix.outerIndexPtr());
-    std::copy(inner_.begin(), inner_.end(), matrix.innerIndexPtr());
-    std::copy(values_.begin(), values_.end(), matrix.valuePtr());
-    return matrix;
-  }
-
- private:
-  int size_;
-  std::vector<int> outer_;
-  std::vector<int> inner_;
-  std::vector<double> values_;
-};
 
 Eigen::Vector3d velocityOf(const Body& body) {
   return {body.velocity.x(), body.velocity.y(), body.angularVelocity};
