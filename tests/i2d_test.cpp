@@ -435,8 +435,35 @@ TEST_CASE("a reference solve that fails ends the run with one error line and exi
   const Outcome outcome =
       i2d("run " + kScenes + "stack.toml --solver reference --set solver.max_pivots=3");
   CHECK(outcome.exitCode == 1);
-  CHECK(outcome.err.rfind("error: reference solver: Lemke: pivot limit of 3 reached", 0) == 0);
+  CHECK(outcome.err.rfind("error: step 1 (t = 0.0166667 s): reference solver: Lemke: pivot limit "
+                          "of 3 reached",
+                          0) == 0);
   CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+}
+
+TEST_CASE("a reference solve that fails names its step and keeps the rows before it",
+          "[i2d][reference][csv]") {
+  // A crate dropped 0.5 m lands after several steps of free fall; one Lemke pivot cannot solve
+  // its landing, so the run stops at that step, as a body that overflows does.
+  const TemporaryDirectory directory;
+  const std::string scene = directory / "drop.toml";
+  writeFile(scene,
+            "[world]\ndt = 0.05\nsteps = 40\nsolver = \"reference\"\n"
+            "[[body]]\nname = \"ground\"\ntype = \"static\"\nshape = \"box\"\nsize = [10, 1]\n"
+            "position = [0, -0.5]\n"
+            "[[body]]\nname = \"crate\"\nshape = \"box\"\nsize = [1, 1]\nposition = [0, 1.0]\n");
+  const std::string csv = directory / "drop.csv";
+  const Outcome outcome = i2d("run " + scene + " --csv " + csv + " --set solver.max_pivots=1");
+  CHECK(outcome.exitCode == 1);
+  REQUIRE(outcome.err.rfind("error: step ", 0) == 0);
+  CHECK(outcome.err.find("reference solver: Lemke: pivot limit of 1 reached") != std::string::npos);
+  CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+  const long failed = std::stol(outcome.err.substr(std::string("error: step ").size()));
+  CHECK(failed > 1);  // the fall before the landing ran
+  const std::vector<std::string> lines = readLines(csv);
+  REQUIRE(lines.size() >= 2);
+  CHECK(lines[0] == kHeader);
+  CHECK(lines.back().rfind(std::to_string(failed - 1) + ",", 0) == 0);  // the step before
 }
 
 TEST_CASE("run --error-vs-reference writes one row per solve and summarises the errors",

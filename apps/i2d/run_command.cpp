@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.h"
 #include "csv_writer.h"
@@ -11,6 +12,7 @@
 #include "frame_output.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/trace.h"
+#include "impulse2d/solvers/reference_solver.h"
 #include "plots.h"
 #include "scene_setup.h"
 #include "summary.h"
@@ -71,13 +73,27 @@ void stopIfNonFinite(const Simulation& simulation, Recorders& recorders) {
   }
 }
 
+/// One step; a reference solve without an exact answer stops the run there, naming the step and
+/// keeping what was recorded before it, as a body that overflows does.
+void stepOrStop(Simulation& simulation, Recorders& recorders) {
+  try {
+    simulation.step();
+  } catch (const impulse2d::ReferenceSolveFailure& failure) {
+    recorders.finish(simulation.settings().dt);
+    const long step = simulation.stepCount() + 1;
+    std::ostringstream where;
+    where << "step " << step << " (t = " << double(step) * simulation.settings().dt << " s): ";
+    throw RunFailure(where.str() + failure.what());
+  }
+}
+
 /// Steps the simulation, recording as it goes; returns the seconds spent stepping.
 double runSteps(Simulation& simulation, long steps, Recorders& recorders) {
   recorders.record(simulation, steps);
   std::chrono::steady_clock::duration stepping{};
   for (long step = 1; step <= steps; ++step) {
     const auto begin = std::chrono::steady_clock::now();
-    simulation.step();
+    stepOrStop(simulation, recorders);
     stepping += std::chrono::steady_clock::now() - begin;
     stopIfNonFinite(simulation, recorders);
     recorders.record(simulation, steps);
