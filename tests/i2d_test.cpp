@@ -395,6 +395,24 @@ TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compa
   CHECK(badPanel.err.find("no_such_key") != std::string::npos);
 }
 
+TEST_CASE("compare stops at a reference solve that fails, naming the panel and the step",
+          "[i2d][compare][reference]") {
+  // The crate of the run test above: one Lemke pivot cannot solve its landing.
+  const TemporaryDirectory directory;
+  const std::string scene = directory / "drop.toml";
+  writeFile(scene,
+            "[world]\ndt = 0.05\nsteps = 40\nsolver = \"reference\"\n"
+            "[[body]]\nname = \"ground\"\ntype = \"static\"\nshape = \"box\"\nsize = [10, 1]\n"
+            "position = [0, -0.5]\n"
+            "[[body]]\nname = \"crate\"\nshape = \"box\"\nsize = [1, 1]\nposition = [0, 1.0]\n");
+  const Outcome outcome = i2d("compare " + scene + " --frames " + (directory / "") +
+                              " --panel 'exact: solver.max_pivots=1' --panel 'also: '");
+  CHECK(outcome.exitCode == 1);
+  CHECK(outcome.err.rfind("error: panel 'exact' at step ", 0) == 0);
+  CHECK(outcome.err.find("reference solver: Lemke: pivot limit of 1 reached") != std::string::npos);
+  CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
+}
+
 TEST_CASE("agree prints a table per dynamic body, a row per method", "[i2d][agree][box2d]") {
   const Outcome outcome = i2d("agree " + kScenes + "incline_friction.toml --steps 30");
   CHECK(outcome.exitCode == 0);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.h"
 #include "failures.h"
@@ -10,6 +11,7 @@
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/panels.h"
 #include "impulse2d/scene/scene_file.h"
+#include "impulse2d/solvers/reference_solver.h"
 #include "plots.h"
 #include "scene_setup.h"
 
@@ -60,9 +62,21 @@ bool isFinite(const Simulation& simulation) {
   return true;
 }
 
+/// Where a panel stopped: its label, the step and its time.
+std::string panelStep(const PanelRun& run, long step) {
+  std::ostringstream where;
+  where << "panel '" << run.label << "' at step " << step
+        << " (t = " << double(step) * run.simulation->settings().dt << " s)";
+  return where.str();
+}
+
 void stepPanels(std::vector<PanelRun>& runs) {
   for (PanelRun& run : runs) {
-    run.simulation->step();
+    try {
+      run.simulation->step();
+    } catch (const impulse2d::ReferenceSolveFailure& failure) {
+      throw RunFailure(panelStep(run, run.simulation->stepCount() + 1) + ": " + failure.what());
+    }
     if (!isFinite(*run.simulation)) {
       throw RunFailure("panel '" + run.label + "' became non-finite at step " +
                        std::to_string(run.simulation->stepCount()));
