@@ -83,6 +83,18 @@ void writeFile(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+/// A crate 0.5 m above the ground under the reference, at 20 steps a second: it falls for six
+/// steps and lands in the seventh. Written into `directory`; returns the scene's path.
+std::string writeDropScene(const TemporaryDirectory& directory) {
+  const std::string scene = directory / "drop.toml";
+  writeFile(scene,
+            "[world]\ndt = 0.05\nsteps = 40\nsolver = \"reference\"\n"
+            "[[body]]\nname = \"ground\"\ntype = \"static\"\nshape = \"box\"\nsize = [10, 1]\n"
+            "position = [0, -0.5]\n"
+            "[[body]]\nname = \"crate\"\nshape = \"box\"\nsize = [1, 1]\nposition = [0, 1.0]\n");
+  return scene;
+}
+
 }  // namespace
 
 TEST_CASE("i2d --help and each command's --help say what it does", "[i2d][help]") {
@@ -397,14 +409,9 @@ TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compa
 
 TEST_CASE("compare stops at a reference solve that fails, naming the panel and the step",
           "[i2d][compare][reference]") {
-  // The crate of the run test above: one Lemke pivot cannot solve its landing.
+  // One Lemke pivot cannot solve the crate's landing.
   const TemporaryDirectory directory;
-  const std::string scene = directory / "drop.toml";
-  writeFile(scene,
-            "[world]\ndt = 0.05\nsteps = 40\nsolver = \"reference\"\n"
-            "[[body]]\nname = \"ground\"\ntype = \"static\"\nshape = \"box\"\nsize = [10, 1]\n"
-            "position = [0, -0.5]\n"
-            "[[body]]\nname = \"crate\"\nshape = \"box\"\nsize = [1, 1]\nposition = [0, 1.0]\n");
+  const std::string scene = writeDropScene(directory);
   const Outcome outcome = i2d("compare " + scene + " --frames " + (directory / "") +
                               " --panel 'exact: solver.max_pivots=1' --panel 'also: '");
   CHECK(outcome.exitCode == 1);
@@ -461,15 +468,10 @@ TEST_CASE("a reference solve that fails ends the run with one error line and exi
 
 TEST_CASE("a reference solve that fails names its step and keeps the rows before it",
           "[i2d][reference][csv]") {
-  // A crate dropped 0.5 m lands after several steps of free fall; one Lemke pivot cannot solve
-  // its landing, so the run stops at that step, as a body that overflows does.
+  // One Lemke pivot cannot solve the crate's landing, so the run stops at that step, as a body
+  // that overflows does.
   const TemporaryDirectory directory;
-  const std::string scene = directory / "drop.toml";
-  writeFile(scene,
-            "[world]\ndt = 0.05\nsteps = 40\nsolver = \"reference\"\n"
-            "[[body]]\nname = \"ground\"\ntype = \"static\"\nshape = \"box\"\nsize = [10, 1]\n"
-            "position = [0, -0.5]\n"
-            "[[body]]\nname = \"crate\"\nshape = \"box\"\nsize = [1, 1]\nposition = [0, 1.0]\n");
+  const std::string scene = writeDropScene(directory);
   const std::string csv = directory / "drop.csv";
   const Outcome outcome = i2d("run " + scene + " --csv " + csv + " --set solver.max_pivots=1");
   CHECK(outcome.exitCode == 1);
