@@ -3,7 +3,6 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.h"
 #include "failures.h"
@@ -62,20 +61,14 @@ bool isFinite(const Simulation& simulation) {
   return true;
 }
 
-/// Where a panel stopped: its label, the step and its time.
-std::string panelStep(const PanelRun& run, long step) {
-  std::ostringstream where;
-  where << "panel '" << run.label << "' at step " << step
-        << " (t = " << double(step) * run.simulation->settings().dt << " s)";
-  return where.str();
-}
-
 void stepPanels(std::vector<PanelRun>& runs) {
   for (PanelRun& run : runs) {
     try {
       run.simulation->step();
     } catch (const impulse2d::ReferenceSolveFailure& failure) {
-      throw RunFailure(panelStep(run, run.simulation->stepCount() + 1) + ": " + failure.what());
+      throw RunFailure("panel '" + run.label + "' at " +
+                       stepAndTime(run.simulation->stepCount() + 1, run.simulation->settings().dt) +
+                       ": " + failure.what());
     }
     if (!isFinite(*run.simulation)) {
       throw RunFailure("panel '" + run.label + "' became non-finite at step " +

@@ -2,7 +2,9 @@
 // docs/i2d.md; an invalid scene is an impulse2d::SceneError (exit 3).
 #pragma once
 
+#include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace i2d {
 
@@ -24,5 +26,12 @@ class RunFailure : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// Where a run stopped, for its error line: "step 37 (t = 0.616667 s)".
+inline std::string stepAndTime(long step, double dt) {
+  std::ostringstream where;
+  where << "step " << step << " (t = " << double(step) * dt << " s)";
+  return where.str();
+}
 
 }  // namespace i2d

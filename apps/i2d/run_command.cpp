@@ -4,7 +4,6 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.h"
 #include "csv_writer.h"
@@ -80,10 +79,8 @@ void stepOrStop(Simulation& simulation, Recorders& recorders) {
     simulation.step();
   } catch (const impulse2d::ReferenceSolveFailure& failure) {
     recorders.finish(simulation.settings().dt);
-    const long step = simulation.stepCount() + 1;
-    std::ostringstream where;
-    where << "step " << step << " (t = " << double(step) * simulation.settings().dt << " s): ";
-    throw RunFailure(where.str() + failure.what());
+    throw RunFailure(stepAndTime(simulation.stepCount() + 1, simulation.settings().dt) + ": " +
+                     failure.what());
   }
 }
 

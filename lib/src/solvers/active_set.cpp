@@ -48,38 +48,17 @@ Eigen::VectorXd freeVelocity(const IslandProblem& problem) {
   return free;
 }
 
-/// The bodies' velocity change M⁻¹Jᵀ Δλ from an impulse change along axis `axis` of point i,
-/// added to `change` (3 per body).
-void addBodyChange(const IslandProblem& problem, int i, int axis, double delta,
-                   Eigen::VectorXd& change) {
-  const IslandPoint& point = problem.points[static_cast<size_t>(i)];
-  for (int side = 0; side < 2; ++side) {
-    const int body = point.body[static_cast<size_t>(side)];
-    if (body < 0) continue;
-    change.segment<3>(3 * body) +=
-        delta * problem.inverseMass.segment<3>(3 * body).cwiseProduct(
-                    point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)]);
-  }
-}
-
-/// J u along axis `axis` of point i, for body velocities (or changes) u, 3 per body.
-double jacobianTimes(const IslandProblem& problem, int i, int axis, const Eigen::VectorXd& u) {
-  const IslandPoint& point = problem.points[static_cast<size_t>(i)];
-  double v = 0.0;
-  for (int side = 0; side < 2; ++side) {
-    const int body = point.body[static_cast<size_t>(side)];
-    if (body < 0) continue;
-    v += point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)].dot(
-        u.segment<3>(3 * body));
-  }
-  return v;
+/// The point of impulse k (2 per point: λn, λt).
+const IslandPoint& pointOf(const IslandProblem& problem, int k) {
+  return problem.points[static_cast<size_t>(k / 2)];
 }
 
 /// The bodies' velocity change M⁻¹Jᵀλ from the points' impulses λ (2 per point).
 Eigen::VectorXd bodyChange(const IslandProblem& problem, const Eigen::VectorXd& impulses) {
   Eigen::VectorXd change = Eigen::VectorXd::Zero(problem.velocity.size());
   for (int k = 0; k < impulses.size(); ++k) {
-    if (impulses(k) != 0.0) addBodyChange(problem, k / 2, k % 2, impulses(k), change);
+    if (impulses(k) == 0.0) continue;
+    addBodyVelocityChange(pointOf(problem, k), k % 2, impulses(k), problem.inverseMass, change);
   }
   return change;
 }
@@ -90,32 +69,31 @@ Eigen::VectorXd delassusTimes(const IslandProblem& problem, const Eigen::VectorX
   const Eigen::VectorXd change = bodyChange(problem, impulses);
   Eigen::VectorXd velocity(impulses.size());
   for (int k = 0; k < impulses.size(); ++k) {
-    velocity(k) = jacobianTimes(problem, k / 2, k % 2, change);
+    velocity(k) = jacobianTimes(pointOf(problem, k), k % 2, change);
   }
   return velocity;
 }
 
+namespace {
+
+/// Whether the point starts the solve from last step's state and impulses (it was solved then,
+/// matched by feature id, and warm states are on).
+bool startsFromLastStep(const IslandPoint& point, const ActiveSetSettings& settings) {
+  return settings.warmStates && point.carried;
+}
+
+}  // namespace
+
 bool needsGuessSweeps(const IslandProblem& problem, const ActiveSetSettings& settings) {
   return std::any_of(problem.points.begin(), problem.points.end(), [&](const IslandPoint& point) {
-    return !(settings.warmStates && point.carried);
+    return !startsFromLastStep(point, settings);
   });
 }
 
 Eigen::VectorXd delassusDiagonal(const IslandProblem& problem) {
-  const int count = static_cast<int>(problem.points.size());
-  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(2 * count);
-  for (int i = 0; i < count; ++i) {
-    const IslandPoint& point = problem.points[static_cast<size_t>(i)];
-    for (int axis = 0; axis < 2; ++axis) {
-      for (int side = 0; side < 2; ++side) {
-        const int body = point.body[static_cast<size_t>(side)];
-        if (body < 0) continue;
-        const Eigen::Vector3d& row =
-            point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)];
-        diagonal(2 * i + axis) +=
-            row.cwiseProduct(row).dot(problem.inverseMass.segment<3>(3 * body));
-      }
-    }
+  Eigen::VectorXd diagonal(2 * static_cast<int>(problem.points.size()));
+  for (int k = 0; k < diagonal.size(); ++k) {
+    diagonal(k) = inverseEffectiveMass(pointOf(problem, k), k % 2, problem.inverseMass);
   }
   return diagonal;
 }
@@ -424,20 +402,17 @@ class FlipRule {
 std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen::VectorXd& free,
                                       const Eigen::VectorXd& diagonal,
                                       const ActiveSetSettings& settings) {
-  const auto fromWarm = [&](const IslandPoint& point) {
-    return settings.warmStates && point.carried;
-  };
   const Eigen::VectorXd swept = needsGuessSweeps(problem, settings)
                                     ? gaussSeidelGuess(problem, free, diagonal, settings)
                                     : Eigen::VectorXd();
   std::vector<ContactState> states(problem.points.size());
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
     const IslandPoint& point = problem.points[static_cast<size_t>(i)];
-    if (fromWarm(point) && point.lastState != ContactState::Unknown) {
+    if (startsFromLastStep(point, settings) && point.lastState != ContactState::Unknown) {
       states[static_cast<size_t>(i)] = point.lastState;
       continue;
     }
-    const Eigen::VectorXd& impulses = fromWarm(point) ? problem.guess : swept;
+    const Eigen::VectorXd& impulses = startsFromLastStep(point, settings) ? problem.guess : swept;
     states[static_cast<size_t>(i)] =
         stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), point.friction);
   }

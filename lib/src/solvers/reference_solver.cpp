@@ -222,17 +222,9 @@ void ReferenceSolver::buildEffectiveMasses(const StepContext& context) {
     inverseMass_.segment<3>(3 * static_cast<int>(b)) << body.inverseMass, body.inverseMass,
         body.inverseInertia;
   }
-  diagonal_ = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
-  for (size_t i = 0; i < rows_.size(); ++i) {
-    const PointRow& row = rows_[i];
-    for (size_t axis = 0; axis < 2; ++axis) {
-      for (size_t side = 0; side < 2; ++side) {
-        if (row.body[side] < 0) continue;
-        const Eigen::Vector3d& j = row.jacobian[axis][side];
-        diagonal_(2 * static_cast<int>(i) + static_cast<int>(axis)) +=
-            j.cwiseProduct(j).dot(inverseMass_.segment<3>(3 * row.body[side]));
-      }
-    }
+  diagonal_.resize(2 * static_cast<int>(rows_.size()));
+  for (int k = 0; k < diagonal_.size(); ++k) {
+    diagonal_(k) = inverseEffectiveMass(rows_[static_cast<size_t>(k / 2)], k % 2, inverseMass_);
   }
 }
 
@@ -305,24 +297,15 @@ Eigen::VectorXd ReferenceSolver::velocityChange(const std::vector<int>& points,
                                                 const Eigen::VectorXd& impulses) const {
   Eigen::VectorXd bodies = Eigen::VectorXd::Zero(inverseMass_.size());
   for (const int i : points) {
-    const PointRow& row = rows_[static_cast<size_t>(i)];
-    for (size_t side = 0; side < 2; ++side) {
-      if (row.body[side] < 0) continue;
-      bodies.segment<3>(3 * row.body[side]) +=
-          inverseMass_.segment<3>(3 * row.body[side])
-              .cwiseProduct(row.jacobian[0][side] * impulses(2 * i) +
-                            row.jacobian[1][side] * impulses(2 * i + 1));
+    for (int axis = 0; axis < 2; ++axis) {
+      addBodyVelocityChange(rows_[static_cast<size_t>(i)], axis, impulses(2 * i + axis),
+                            inverseMass_, bodies);
     }
   }
   Eigen::VectorXd change = Eigen::VectorXd::Zero(impulses.size());
   for (const int i : points) {
-    const PointRow& row = rows_[static_cast<size_t>(i)];
-    for (size_t axis = 0; axis < 2; ++axis) {
-      for (size_t side = 0; side < 2; ++side) {
-        if (row.body[side] < 0) continue;
-        change(2 * i + static_cast<int>(axis)) +=
-            row.jacobian[axis][side].dot(bodies.segment<3>(3 * row.body[side]));
-      }
+    for (int axis = 0; axis < 2; ++axis) {
+      change(2 * i + axis) = jacobianTimes(rows_[static_cast<size_t>(i)], axis, bodies);
     }
   }
   return change;

@@ -49,6 +49,46 @@ struct IslandPoint {
   ContactState lastState = ContactState::Unknown;
 };
 
+// The Jacobian arithmetic of one contact point, shared by the active set (IslandPoint) and the
+// reference's own rows: any point type with `body` (−1 for a static body) and
+// `jacobian[axis][side]`, on vectors of 3 per body (vx, vy, ω).
+
+/// J u along `axis`: the relative velocity that body velocities (or changes) u give the point.
+template <typename Point>
+double jacobianTimes(const Point& point, int axis, const Eigen::VectorXd& u) {
+  double v = 0.0;
+  for (size_t side = 0; side < 2; ++side) {
+    const int body = point.body[side];
+    if (body >= 0) v += point.jacobian[static_cast<size_t>(axis)][side].dot(u.segment<3>(3 * body));
+  }
+  return v;
+}
+
+/// change += M⁻¹Jᵀ times an impulse along `axis`: the bodies' velocity change from it.
+template <typename Point>
+void addBodyVelocityChange(const Point& point, int axis, double impulse,
+                           const Eigen::VectorXd& inverseMass, Eigen::VectorXd& change) {
+  for (size_t side = 0; side < 2; ++side) {
+    const int body = point.body[side];
+    if (body < 0) continue;
+    change.segment<3>(3 * body) += impulse * inverseMass.segment<3>(3 * body).cwiseProduct(
+                                                 point.jacobian[static_cast<size_t>(axis)][side]);
+  }
+}
+
+/// J M⁻¹ Jᵀ along `axis`: the point's inverse effective mass there (W's diagonal entry).
+template <typename Point>
+double inverseEffectiveMass(const Point& point, int axis, const Eigen::VectorXd& inverseMass) {
+  double w = 0.0;
+  for (size_t side = 0; side < 2; ++side) {
+    const int body = point.body[side];
+    if (body < 0) continue;
+    const Eigen::Vector3d& row = point.jacobian[static_cast<size_t>(axis)][side];
+    w += row.cwiseProduct(row).dot(inverseMass.segment<3>(3 * body));
+  }
+  return w;
+}
+
 /// One island's problem: its points and its bodies. The solve takes W λ (W = J M⁻¹ Jᵀ, the
 /// Delassus matrix) through the bodies, J (M⁻¹ (Jᵀ λ)) (delassusTimes), at the cost of the
 /// points' Jacobian rows rather than of W's entries (about 20 coupled points a point in a pile of

@@ -45,8 +45,7 @@ class MicroCollisionSolver : public ContactSolver {
       sine = std::sin(angle);
     }
   };
-  /// Aligned so that what the penetration phase reads fills one cache line.
-  struct alignas(64) PointState {
+  struct PointState {
     // What the penetration phase reads, together ...
     int bodyA = 0;
     int bodyB = 0;
