@@ -273,6 +273,11 @@ struct ActiveSetSettings {
   /// A solve on kept factors is done once the residual of A x = b is below this fraction of
   /// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.
   double keptTolerance = 1e-14;
+  /// The factorization takes a row's own diagonal entry as its pivot when that entry is at
+  /// least this fraction of the largest in its column, so the symmetric fill-reducing order
+  /// holds; below, it pivots on the largest. The regularized pivots of a redundant pile are about
+  /// `regularization` of their column and must pass; 1 is partial pivoting.
+  double diagonalPivotThreshold = 1e-12;
 };
 
 /// The global solve of all contact impulses together: the accuracy reference.

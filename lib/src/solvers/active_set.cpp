@@ -1,9 +1,12 @@
-// The active-set method: guess the states, solve the KKT system, flip what it violates.
+// The active-set method: guess the states, solve for the impulses they leave unknown, flip what
+// the answer violates.
 #include "impulse2d/solvers/active_set.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -155,129 +158,246 @@ Eigen::VectorXd gaussSeidelGuess(const IslandProblem& problem, const Eigen::Vect
   return impulses;
 }
 
-/// The KKT system of one guess of the states, assembled column by column in Eigen's compressed
-/// form (each column's rows in increasing order, as setFromTriplets would leave them, without
-/// its sort). Unknowns: 3 per body (vx, vy, ω), then 2 per point (λn, λt). Rows:
-///   body rows       u − M⁻¹Jᵀλ = u₀, the same whatever the states;
-///   point rows      separated: λn = 0, λt = 0; otherwise J u + r λ = target along the normal,
-///                   and along the tangent J u + r λ = 0 (sticking) or λt ∓ μλn = 0 (sliding);
-/// r, the regularization, is kept in `shift` so solveProximal can take it out again.
-class SystemAssembly {
+/// Which points couple in W (they share a body) and through which sides, point by point in
+/// increasing order: the pattern of every guess's matrix, built once per solve, on its first
+/// factorization (a resting pile's step on kept factors needs none).
+class Neighbours {
  public:
-  explicit SystemAssembly(const IslandProblem& problem)
-      : problem_(problem),
-        bodyUnknowns_(static_cast<int>(problem.velocity.size())),
-        pointsOfBody_(static_cast<size_t>(bodyUnknowns_ / 3)) {
-    for (int i = 0; i < pointCount(); ++i) {
-      for (int side = 0; side < 2; ++side) {
-        const int body = point(i).body[static_cast<size_t>(side)];
-        if (body >= 0) pointsOfBody_[static_cast<size_t>(body)].push_back({i, side});
+  /// Point j next to point i: the bodies they share, as (j's side, i's side).
+  struct Coupling {
+    int point = 0;
+    int shared = 0;
+    std::array<std::array<int, 2>, 2> sides{};
+  };
+  struct Range {
+    const Coupling* first;
+    const Coupling* last;
+    const Coupling* begin() const { return first; }
+    const Coupling* end() const { return last; }
+  };
+
+  explicit Neighbours(const IslandProblem& problem) {
+    const int count = static_cast<int>(problem.points.size());
+    std::vector<std::vector<int>> pointsOfBody(static_cast<size_t>(problem.velocity.size() / 3));
+    for (int i = 0; i < count; ++i) {
+      for (const int body : problem.points[static_cast<size_t>(i)].body) {
+        if (body >= 0) pointsOfBody[static_cast<size_t>(body)].push_back(i);
       }
+    }
+    first_.reserve(static_cast<size_t>(count) + 1);
+    first_.push_back(0);
+    const std::vector<int> none;
+    for (int i = 0; i < count; ++i) {
+      const std::array<int, 2>& bodies = problem.points[static_cast<size_t>(i)].body;
+      const std::vector<int>& a =
+          bodies[0] >= 0 ? pointsOfBody[static_cast<size_t>(bodies[0])] : none;
+      const std::vector<int>& b =
+          bodies[1] >= 0 ? pointsOfBody[static_cast<size_t>(bodies[1])] : none;
+      mergeNext(problem, i, a, b);
+      first_.push_back(static_cast<int>(couplings_.size()));
     }
   }
 
-  /// The system for `states`; rhs and shift are filled alongside.
-  Sparse assemble(const std::vector<ContactState>& states, const Eigen::VectorXd& diagonal,
-                  double regularization, Eigen::VectorXd& rhs, Eigen::VectorXd& shift) const {
-    const int size = bodyUnknowns_ + 2 * pointCount();
-    rhs = Eigen::VectorXd::Zero(size);
-    rhs.head(bodyUnknowns_) = problem_.velocity;
-    shift = Eigen::VectorXd::Zero(2 * pointCount());
-    CompressedColumns columns(size, countEntries(states));
-    for (int c = 0; c < bodyUnknowns_; ++c) addBodyColumn(c, states, columns);
-    for (int i = 0; i < pointCount(); ++i) {
-      addPointColumns(i, states, diagonal, regularization, rhs, shift, columns);
-    }
-    return columns.matrix();
+  Range of(int i) const {
+    const Coupling* all = couplings_.data();
+    return {all + first_[static_cast<size_t>(i)], all + first_[static_cast<size_t>(i) + 1]};
   }
 
  private:
-  struct Incidence {
-    int point;
-    int side;
-  };
+  /// Appends point i's neighbours: the points of its body on side 0 (list a) and on side 1
+  /// (list b), both in increasing order, merged; a point in both shares both bodies.
+  void mergeNext(const IslandProblem& problem, int i, const std::vector<int>& a,
+                 const std::vector<int>& b) {
+    const std::array<int, 2>& bodies = problem.points[static_cast<size_t>(i)].body;
+    size_t ia = 0;
+    size_t ib = 0;
+    while (ia < a.size() || ib < b.size()) {
+      const int j = std::min(ia < a.size() ? a[ia] : INT_MAX, ib < b.size() ? b[ib] : INT_MAX);
+      Coupling c;
+      c.point = j;
+      const std::array<int, 2>& other = problem.points[static_cast<size_t>(j)].body;
+      for (int side = 0; side < 2; ++side) {
+        std::size_t& cursor = side == 0 ? ia : ib;
+        const std::vector<int>& list = side == 0 ? a : b;
+        if (cursor >= list.size() || list[cursor] != j) continue;
+        ++cursor;
+        const int rowSide = other[0] == bodies[static_cast<size_t>(side)] ? 0 : 1;
+        c.sides[static_cast<size_t>(c.shared++)] = {rowSide, side};
+      }
+      couplings_.push_back(c);
+    }
+  }
+
+  std::vector<Coupling> couplings_;
+  std::vector<int> first_;  ///< where each point's neighbours start in couplings_
+};
+
+/// The linear system of one guess of the states, in the impulses the states leave unknown. The
+/// bodies' velocities are eliminated (u = u₀ + M⁻¹Jᵀλ), so the rows are the points' velocity
+/// conditions in their impulses: W λ + r λ = −(J u₀ − target), one row for each normal of a
+/// touching point and each tangent of a sticking one. A separated point has no unknown (λ = 0); a
+/// sliding point only λn, its friction λt = ∓μλn folded into λn's column. The matrix is W
+/// restricted to those rows (symmetric but for the sliding columns) and is assembled only to be
+/// factorized, column by column in Eigen's compressed form; products A x are taken through the
+/// bodies. r, the regularization, is kept in `shift` so the solve can take it out again.
+class GuessSystem final : public PosedSystem {
+ public:
+  GuessSystem(const IslandProblem& problem, const std::vector<ContactState>& states,
+              const Eigen::VectorXd& diagonal, const Eigen::VectorXd& free, double regularization,
+              std::optional<Neighbours>& neighbours)
+      : problem_(problem), states_(states), neighbours_(neighbours) {
+    firstRow_.assign(states.size(), -1);
+    int rows = 0;
+    for (int i = 0; i < pointCount(); ++i) {
+      if (rowsOf(i) == 0) continue;
+      firstRow_[static_cast<size_t>(i)] = rows;
+      rows += rowsOf(i);
+    }
+    rhs_.resize(rows);
+    shift_.resize(rows);
+    for (int i = 0; i < pointCount(); ++i) {
+      for (int axis = 0; axis < rowsOf(i); ++axis) {
+        rhs_(row(i, axis)) = -free(2 * i + axis);
+        shift_(row(i, axis)) = regularization * diagonal(2 * i + axis);
+      }
+    }
+    rowSum_ = boundRowSum();
+  }
+
+  Eigen::Index size() const override { return rhs_.size(); }
+  const Eigen::VectorXd& shift() const override { return shift_; }
+  double rowSum() const override { return rowSum_; }
+  const Eigen::VectorXd& rhs() const { return rhs_; }
+
+  Eigen::VectorXd times(const Eigen::VectorXd& x) const override {
+    const Eigen::VectorXd velocity = delassusTimes(problem_, impulses(x));
+    Eigen::VectorXd product(x.size());
+    for (int i = 0; i < pointCount(); ++i) {
+      for (int axis = 0; axis < rowsOf(i); ++axis) {
+        const int k = row(i, axis);
+        product(k) = velocity(2 * i + axis) + shift_(k) * x(k);
+      }
+    }
+    return product;
+  }
+
+  Sparse matrix() const override {
+    if (!neighbours_) neighbours_.emplace(problem_);
+    Eigen::Index entries = 0;
+    for (int i = 0; i < pointCount(); ++i) {
+      Eigen::Index column = 0;
+      for (const Neighbours::Coupling& c : neighbours_->of(i)) column += rowsOf(c.point);
+      entries += rowsOf(i) * column;
+    }
+    CompressedColumns columns(static_cast<int>(size()), entries);
+    for (int i = 0; i < pointCount(); ++i) {
+      for (int axis = 0; axis < rowsOf(i); ++axis) addColumn(i, axis, columns);
+    }
+    return columns.take();
+  }
+
+  /// The impulses (λn, λt per point) of the system's answer x.
+  Eigen::VectorXd impulses(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd all = Eigen::VectorXd::Zero(2 * pointCount());
+    for (int i = 0; i < pointCount(); ++i) {
+      const ContactState state = states_[static_cast<size_t>(i)];
+      if (state == ContactState::Separated) continue;
+      all(2 * i) = x(row(i, 0));
+      all(2 * i + 1) = state == ContactState::Sticking
+                           ? x(row(i, 1))
+                           : -slidingSign(state) * point(i).friction * x(row(i, 0));
+    }
+    return all;
+  }
+
+ private:
   const IslandPoint& point(int i) const { return problem_.points[static_cast<size_t>(i)]; }
   int pointCount() const { return static_cast<int>(problem_.points.size()); }
-  static int velocityRows(ContactState state) {
+  int row(int i, int axis) const { return firstRow_[static_cast<size_t>(i)] + axis; }
+  /// The unknowns (and rows) of point i: none if separated, λn if sliding, λn and λt if sticking.
+  int rowsOf(int i) const {
+    const ContactState state = states_[static_cast<size_t>(i)];
     if (state == ContactState::Separated) return 0;
     return state == ContactState::Sticking ? 2 : 1;
   }
-
-  size_t countEntries(const std::vector<ContactState>& states) const {
-    size_t entries = static_cast<size_t>(bodyUnknowns_);
-    for (int i = 0; i < pointCount(); ++i) {
-      const ContactState state = states[static_cast<size_t>(i)];
-      const int bodies = (point(i).body[0] >= 0) + (point(i).body[1] >= 0);
-      entries += static_cast<size_t>(3 * bodies * (2 + velocityRows(state)));  // M⁻¹Jᵀ, J
-      entries += state == ContactState::Separated || state == ContactState::Sticking ? 2 : 3;
-    }
-    return entries;
+  /// +1 sliding +, −1 sliding −: the friction of a sliding point is λt = −sign·μλn.
+  static double slidingSign(ContactState state) {
+    return state == ContactState::SlidingPositive ? 1.0 : -1.0;
   }
 
-  /// Column c of a body unknown: its identity entry, then J's entries of the velocity rows of
-  /// the points it touches, in the points' order.
-  void addBodyColumn(int c, const std::vector<ContactState>& states,
-                     CompressedColumns& column) const {
-    column.add(c, 1.0);
-    for (const Incidence& incidence : pointsOfBody_[static_cast<size_t>(c / 3)]) {
-      const int rows = velocityRows(states[static_cast<size_t>(incidence.point)]);
-      for (int axis = 0; axis < rows; ++axis) {
-        const Eigen::Vector3d& coefficients =
-            point(incidence.point)
-                .jacobian[static_cast<size_t>(axis)][static_cast<size_t>(incidence.side)];
-        column.add(bodyUnknowns_ + 2 * incidence.point + axis, coefficients(c % 3));
+  /// The bodies' velocity change per unit of the unknown (point i, axis): M⁻¹ times its impulse
+  /// direction, Jᵀ along the axis, or Jnᵀ ∓ μJtᵀ for a sliding point's λn; one per side.
+  std::array<Eigen::Vector3d, 2> unitChange(int i, int axis) const {
+    const IslandPoint& p = point(i);
+    const ContactState state = states_[static_cast<size_t>(i)];
+    std::array<Eigen::Vector3d, 2> change{};
+    for (size_t side = 0; side < 2; ++side) {
+      if (p.body[side] < 0) continue;
+      Eigen::Vector3d direction = p.jacobian[static_cast<size_t>(axis)][side];
+      if (state != ContactState::Sticking) {
+        direction -= slidingSign(state) * p.friction * p.jacobian[1][side];
+      }
+      change[side] = problem_.inverseMass.segment<3>(3 * p.body[side]).cwiseProduct(direction);
+    }
+    return change;
+  }
+
+  /// The column of unknown (point i, axis): the velocity every row's point gets from it, in
+  /// the rows' order (neighbours are in increasing order, rows are numbered point by point).
+  void addColumn(int i, int axis, CompressedColumns& column) const {
+    const std::array<Eigen::Vector3d, 2> change = unitChange(i, axis);
+    for (const Neighbours::Coupling& c : neighbours_->of(i)) {
+      const IslandPoint& rowPoint = point(c.point);
+      for (int r = 0; r < rowsOf(c.point); ++r) {
+        double value = c.point == i && r == axis ? shift_(row(i, axis)) : 0.0;
+        for (int k = 0; k < c.shared; ++k) {
+          const auto [rowSide, side] = c.sides[static_cast<size_t>(k)];
+          value += rowPoint.jacobian[static_cast<size_t>(r)][static_cast<size_t>(rowSide)].dot(
+              change[static_cast<size_t>(side)]);
+        }
+        column.add(row(c.point, r), value);
       }
     }
     column.close();
   }
 
-  /// The columns of a point's λn and λt: −M⁻¹Jᵀ in the rows of its bodies (in increasing
-  /// order), then its own rows.
-  void addPointColumns(int i, const std::vector<ContactState>& states,
-                       const Eigen::VectorXd& diagonal, double regularization, Eigen::VectorXd& rhs,
-                       Eigen::VectorXd& shift, CompressedColumns& column) const {
-    const IslandPoint& p = point(i);
-    const ContactState state = states[static_cast<size_t>(i)];
-    const int normal = bodyUnknowns_ + 2 * i;
-    const int tangent = normal + 1;
-    const std::array<int, 2> sides = p.body[1] >= 0 && (p.body[0] < 0 || p.body[1] < p.body[0])
-                                         ? std::array{1, 0}
-                                         : std::array{0, 1};
-    for (int axis = 0; axis < 2; ++axis) {
-      for (const int side : sides) {
-        const int body = p.body[static_cast<size_t>(side)];
-        if (body < 0) continue;
-        const Eigen::Vector3d& row =
-            p.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)];
-        for (int c = 0; c < 3; ++c) {
-          column.add(3 * body + c, -problem_.inverseMass(3 * body + c) * row(c));
+  /// A bound on |A|, the largest sum of a row's magnitudes, from the entries' bounds
+  /// |J_row| M⁻¹ |direction|: each body's sum of its unknowns' |M⁻¹ direction|, taken by each
+  /// row's |J|. It is the scale the solve's residuals are measured against.
+  double boundRowSum() const {
+    Eigen::VectorXd reach = Eigen::VectorXd::Zero(problem_.velocity.size());
+    for (int i = 0; i < pointCount(); ++i) {
+      for (int axis = 0; axis < rowsOf(i); ++axis) {
+        const std::array<Eigen::Vector3d, 2> change = unitChange(i, axis);
+        for (size_t side = 0; side < 2; ++side) {
+          const int body = point(i).body[side];
+          if (body >= 0) reach.segment<3>(3 * body) += change[side].cwiseAbs();
         }
       }
-      const int own = normal + axis;
-      if (state == ContactState::Separated) {
-        column.add(own, 1.0);
-      } else if (axis == 0 || state == ContactState::Sticking) {
-        const double r = regularization * diagonal(2 * i + axis);
-        column.add(own, r);
-        shift(2 * i + axis) = r;
-      } else {
-        column.add(own, 1.0);  // sliding: λt ∓ μλn = 0
-      }
-      if (axis == 0 &&
-          (state == ContactState::SlidingPositive || state == ContactState::SlidingNegative)) {
-        const double sign = state == ContactState::SlidingPositive ? 1.0 : -1.0;
-        column.add(tangent, sign * p.friction);
-      }
-      column.close();
     }
-    if (state == ContactState::Separated) return;
-    rhs(normal) = p.targetNormalVelocity - p.staticVelocity[0];
-    if (state == ContactState::Sticking) rhs(tangent) = -p.staticVelocity[1];
+    double bound = 0.0;
+    for (int i = 0; i < pointCount(); ++i) {
+      for (int axis = 0; axis < rowsOf(i); ++axis) {
+        double sum = shift_(row(i, axis));
+        for (size_t side = 0; side < 2; ++side) {
+          const int body = point(i).body[side];
+          if (body < 0) continue;
+          sum += point(i).jacobian[static_cast<size_t>(axis)][side].cwiseAbs().dot(
+              reach.segment<3>(3 * body));
+        }
+        bound = std::max(bound, sum);
+      }
+    }
+    return bound;
   }
 
   const IslandProblem& problem_;
-  const int bodyUnknowns_;
-  std::vector<std::vector<Incidence>> pointsOfBody_;  ///< by island body, in the points' order
+  const std::vector<ContactState>& states_;
+  std::optional<Neighbours>& neighbours_;
+  std::vector<int> firstRow_;  ///< each point's first row, −1 if separated
+  Eigen::VectorXd rhs_;
+  Eigen::VectorXd shift_;
+  double rowSum_ = 0.0;
 };
 
 /// What the answer breaks, point by point: a pull, a closing separated point, friction beyond
@@ -319,15 +439,6 @@ double impulseScale(const Eigen::VectorXd& impulses, const Eigen::VectorXd& free
   double scale = impulses.size() > 0 ? impulses.cwiseAbs().maxCoeff() : 0.0;
   for (int k = 0; k < free.size(); ++k) scale = std::max(scale, std::abs(free(k)) / diagonal(k));
   return scale;
-}
-
-/// A separated point's impulses are zero by its state, but the solve leaves round-off there
-/// (1e-16 N s on a 40-row pyramid): next step's warm states would read that as a touching
-/// point, and about 50 such points a step would pull at the first factorization.
-void zeroSeparated(const std::vector<ContactState>& states, Eigen::VectorXd& impulses) {
-  for (size_t i = 0; i < states.size(); ++i) {
-    if (states[i] == ContactState::Separated) impulses.segment<2>(2 * Eigen::Index(i)).setZero();
-  }
 }
 
 /// Júdice–Pires: flip every violator while their number falls (or for a few tries after), else
@@ -421,25 +532,36 @@ std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen:
 
 }  // namespace
 
+/// LU factors of P A Pᵀ, P a symmetric fill-reducing order (AMD on A's pattern, which is
+/// symmetric: two points couple when they share a body) and the pivots A's own diagonal wherever
+/// it is at least diagonalPivotThreshold of its column. A column order alone (COLAMD) with
+/// partial pivoting, as for an unsymmetric matrix, fills 2.2 times as many entries on a 40-row
+/// pyramid's system, and the regularized pivots of a redundant pile (about r) would be passed
+/// over for off-diagonal ones, breaking the symmetric order's fill.
 struct KeptFactorization::Factors {
-  Eigen::SparseLU<Sparse, Eigen::COLAMDOrdering<int>> lu;
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;  ///< P⁻¹
+  Eigen::SparseLU<Sparse, Eigen::NaturalOrdering<int>> lu;
+
+  void compute(const Sparse& system, double pivotThreshold) {
+    Eigen::AMDOrdering<int>()(system, order);
+    const Sparse rows = order.inverse() * system;
+    lu.setPivotThreshold(pivotThreshold);
+    lu.compute(rows * order);
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const {
+    return order * lu.solve(order.inverse() * rhs).eval();
+  }
 };
 
 KeptFactorization::KeptFactorization() : factors_(std::make_unique<Factors>()) {}
 KeptFactorization::~KeptFactorization() = default;
 
-bool KeptFactorization::prepare(Sparse system, const Eigen::VectorXd& shift, bool reuse,
+bool KeptFactorization::prepare(const PosedSystem& system, bool reuse,
                                 const ActiveSetSettings& settings) {
-  const bool sameSize = factorsValid_ && system.rows() == system_.rows();
-  system_ = std::move(system);
-  shift_ = shift;
+  const bool sameSize = factorsValid_ && system.size() == factoredSize_;
+  system_ = &system;
   settings_ = settings;
   fresh_ = false;
-  Eigen::VectorXd sums = Eigen::VectorXd::Zero(system_.rows());
-  for (int c = 0; c < system_.outerSize(); ++c) {
-    for (Sparse::InnerIterator it(system_, c); it; ++it) sums(it.row()) += std::abs(it.value());
-  }
-  rowSum_ = sums.maxCoeff();
   if (!reuse || !sameSize) return factorize();
   return true;
 }
@@ -447,11 +569,12 @@ bool KeptFactorization::prepare(Sparse system, const Eigen::VectorXd& shift, boo
 /// The scale of a residual of A x = rhs: |rhs| + |A||x| (largest entries, largest row sum).
 double KeptFactorization::residualScale(const Eigen::VectorXd& rhs,
                                         const Eigen::VectorXd& x) const {
-  return rhs.cwiseAbs().maxCoeff() + rowSum_ * x.cwiseAbs().maxCoeff();
+  return rhs.cwiseAbs().maxCoeff() + system_->rowSum() * x.cwiseAbs().maxCoeff();
 }
 
 bool KeptFactorization::factorize() {
-  factors_->lu.compute(system_);
+  factors_->compute(system_->matrix(), settings_.diagonalPivotThreshold);
+  factoredSize_ = system_->size();
   ++factorizations_;
   fresh_ = factorsValid_ = factors_->lu.info() == Eigen::Success;
   if (!fresh_) lastError_ = factors_->lu.lastErrorMessage();
@@ -474,9 +597,9 @@ std::pair<double, double> givens(double a, double b) {
 /// residual is not at round-off within keptRounds (K is too far from A).
 bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
   const int rounds = settings_.keptRounds;
-  x = factors_->lu.solve(rhs);
+  x = factors_->solve(rhs);
   const double tolerance = settings_.keptTolerance * residualScale(rhs, x);
-  const Eigen::VectorXd residual = rhs - system_ * x;
+  const Eigen::VectorXd residual = rhs - system_->times(x);
   const double beta = residual.norm();
   if (residual.cwiseAbs().maxCoeff() <= tolerance) return true;
   std::vector<Eigen::VectorXd> basis{residual / beta};
@@ -486,8 +609,8 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
   Eigen::VectorXd g = Eigen::VectorXd::Zero(rounds + 1);
   g(0) = beta;
   for (int j = 0; j < rounds; ++j) {
-    preconditioned.push_back(factors_->lu.solve(basis[static_cast<size_t>(j)]));
-    Eigen::VectorXd w = system_ * preconditioned.back();
+    preconditioned.push_back(factors_->solve(basis[static_cast<size_t>(j)]));
+    Eigen::VectorXd w = system_->times(preconditioned.back());
     for (int i = 0; i <= j; ++i) {
       hessenberg(i, j) = w.dot(basis[static_cast<size_t>(i)]);
       w -= hessenberg(i, j) * basis[static_cast<size_t>(i)];
@@ -510,7 +633,7 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
     const Eigen::VectorXd y =
         hessenberg.topLeftCorner(j + 1, j + 1).triangularView<Eigen::Upper>().solve(g.head(j + 1));
     for (int i = 0; i <= j; ++i) x += y(i) * preconditioned[static_cast<size_t>(i)];
-    return (rhs - system_ * x).cwiseAbs().maxCoeff() <= tolerance;
+    return (rhs - system_->times(x)).cwiseAbs().maxCoeff() <= tolerance;
   }
   return false;
 }
@@ -526,29 +649,28 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
 /// solve on kept factors does not reach its tolerance (the caller then factorizes).
 bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
   if (fresh_) {
-    x = factors_->lu.solve(rhs);
+    x = factors_->solve(rhs);
   } else if (!solveOnKeptFactors(rhs, x)) {
     return false;
   }
-  const Eigen::Index impulses = shift_.size();
   const int corrections = fresh_ ? settings_.refinements : settings_.keptRounds;
   for (int k = 0;; ++k) {
-    Eigen::VectorXd residual = rhs - system_ * x;
-    residual.tail(impulses) += shift_.cwiseProduct(x.tail(impulses));
+    Eigen::VectorXd residual = rhs - system_->times(x);
+    residual += system_->shift().cwiseProduct(x);
     if (residual.cwiseAbs().maxCoeff() <= settings_.refinementTolerance * residualScale(rhs, x)) {
       return true;
     }
     if (k == corrections) return fresh_;
-    x += factors_->lu.solve(residual);
+    x += factors_->solve(residual);
   }
 }
 
 Eigen::VectorXd KeptFactorization::solve(const Eigen::VectorXd& rhs) {
   Eigen::VectorXd x;
-  if (!fresh_ && solveProximal(rhs, x)) return x.tail(shift_.size());
-  if (!fresh_ && !factorize()) return Eigen::VectorXd::Constant(shift_.size(), std::nan(""));
+  if (!fresh_ && solveProximal(rhs, x)) return x;
+  if (!fresh_ && !factorize()) return Eigen::VectorXd::Constant(rhs.size(), std::nan(""));
   solveProximal(rhs, x);
-  return x.tail(shift_.size());
+  return x;
 }
 
 ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double friction) {
@@ -564,7 +686,7 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
   const Eigen::VectorXd diagonal = delassusDiagonal(problem);
   const Eigen::VectorXd free = freeVelocity(problem);
   std::vector<ContactState> states = guessStates(problem, free, diagonal, settings);
-  const SystemAssembly assembly(problem);
+  std::optional<Neighbours> neighbours;  // W's pattern, built at the first factorization
   FlipRule flips(settings);
   ActiveSetAnswer answer;
   const int factorizationsBefore = kept.factorizations();
@@ -582,20 +704,19 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
                        std::to_string(answer.factorizations) + ")";
       return answer;
     }
-    Eigen::VectorXd rhs;
-    Eigen::VectorXd shift;
-    Sparse system = assembly.assemble(states, diagonal, settings.regularization, rhs, shift);
+    const GuessSystem system(problem, states, diagonal, free, settings.regularization, neighbours);
+    Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(system.size());
     const bool prepared =
-        kept.prepare(std::move(system), shift, firstSystem && settings.keepFactors, settings);
+        system.size() == 0 || kept.prepare(system, firstSystem && settings.keepFactors, settings);
     firstSystem = false;
-    if (prepared) answer.impulses = kept.solve(rhs);
+    if (prepared && system.size() > 0) unknowns = kept.solve(system.rhs());
     answer.factorizations = kept.factorizations() - factorizationsBefore;
-    if (!prepared || !answer.impulses.allFinite()) {
+    if (!prepared || !unknowns.allFinite()) {
       answer.failure = "active set: singular system at factorization " +
                        std::to_string(answer.factorizations) + " (" + kept.lastError() + ")";
       return answer;
     }
-    zeroSeparated(states, answer.impulses);
+    answer.impulses = system.impulses(unknowns);
     const Eigen::VectorXd velocity = free + delassusTimes(problem, answer.impulses);
     const double tolerance = settings.flipTolerance * impulseScale(answer.impulses, free, diagonal);
     const std::vector<Violation> found =

@@ -281,7 +281,7 @@ Eigen::SparseMatrix<double> ReferenceSolver::islandDelassus(const std::vector<in
       columns.close();
     }
   }
-  return columns.matrix();
+  return columns.take();
 }
 
 Eigen::SparseMatrix<double> ReferenceSolver::delassusMatrix() const {

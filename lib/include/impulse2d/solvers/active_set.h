@@ -6,10 +6,12 @@
 //   sticking    vn = target, vt = 0              (and then λn ≥ 0, |λt| ≤ μλn)
 //   sliding +   vn = target, λt = −μλn           (and then λn ≥ 0, vt ≥ 0)
 //   sliding −   vn = target, λt = +μλn           (and then λn ≥ 0, vt ≤ 0)
-// The system is the KKT form in the bodies' velocities u and the impulses λ:
-//   u − M⁻¹Jᵀλ = u₀ for every body, and one row per point condition above (Ju is the relative
-//   velocity of a point), factorized by Eigen's SparseLU: its cost follows the contact graph,
-//   not (points)³.
+// The bodies' velocities are eliminated (u = u₀ + M⁻¹Jᵀλ), so the system is in the impulses the
+// states leave unknown (λn of a touching point, λt of a sticking one), one row per condition
+// above: W restricted to those rows and columns, a sliding point's λt = ∓μλn folded into its λn
+// column. It is symmetric but for those columns, and factorized by LU in a symmetric
+// fill-reducing order (AMD) with its own diagonal as pivots: its cost follows the contact graph,
+// not (points)³.
 // Points whose answer breaks the "and then" of their state change state: all at once while that
 // lowers the number of violated points (block pivoting, Júdice–Pires), then one at a time, the
 // worst first, until it falls again. The first guess comes from last step's impulses (kept by
@@ -92,7 +94,8 @@ double inverseEffectiveMass(const Point& point, int axis, const Eigen::VectorXd&
 /// One island's problem: its points and its bodies. The solve takes W λ (W = J M⁻¹ Jᵀ, the
 /// Delassus matrix) through the bodies, J (M⁻¹ (Jᵀ λ)) (delassusTimes), at the cost of the
 /// points' Jacobian rows rather than of W's entries (about 20 coupled points a point in a pile of
-/// boxes). W itself is needed only by the projected Gauss–Seidel sweeps that guess the states of
+/// boxes); W's rows of the touching points are assembled only to be factorized. W itself is
+/// needed only by the projected Gauss–Seidel sweeps that guess the states of
 /// new points (needsGuessSweeps): on a degenerate pile their rounding decides the path of the
 /// first step's flips, and the same sweeps done through the bodies sent 4 of 5 time steps of
 /// pyramid40's first step on a path of 59-64 factorizations instead of 9
@@ -123,6 +126,21 @@ struct ActiveSetAnswer {
   std::string failure;
 };
 
+/// One guess's linear system A x = b as the active set poses it, A = A₀ + S with S the
+/// regularization on the diagonal: its products A x (taken through the bodies, at the cost of the
+/// points' Jacobian rows), and its matrix only when it is factorized.
+class PosedSystem {
+ public:
+  virtual ~PosedSystem() = default;
+  virtual Eigen::Index size() const = 0;
+  virtual Eigen::VectorXd times(const Eigen::VectorXd& x) const = 0;
+  virtual Eigen::SparseMatrix<double> matrix() const = 0;
+  /// S's diagonal.
+  virtual const Eigen::VectorXd& shift() const = 0;
+  /// |A|, the largest sum of a row's magnitudes (or a bound on it): the scale of residuals.
+  virtual double rowSum() const = 0;
+};
+
 /// The factors of the last system an island's active set factorized, kept to the next solve.
 ///
 /// A resting pile poses next step the system of last step's states again, its values moved by
@@ -130,8 +148,9 @@ struct ActiveSetAnswer {
 /// cone's edge whose sliding direction flipped). Each of its solves A x = b is then done by
 /// GMRES preconditioned by the kept factors K: K⁻¹b is already close, and the Krylov space of
 /// A K⁻¹ holds the rest in about one round per changed row, each round two triangular solves
-/// instead of a factorization. A system not solved to round-off within keptRounds (many states
-/// flipped, another island) is factorized after all; the answer is the same either way.
+/// and a product through the bodies instead of an assembly and a factorization. A system not
+/// solved to round-off within keptRounds (many states flipped, another island) is factorized
+/// after all; the answer is the same either way.
 class KeptFactorization {
  public:
   KeptFactorization();
@@ -139,13 +158,12 @@ class KeptFactorization {
   KeptFactorization(const KeptFactorization&) = delete;
   KeptFactorization& operator=(const KeptFactorization&) = delete;
 
-  /// Makes A = system, whose last `shift.size()` rows carry the regularization `shift`, the
-  /// system solve() answers. Factorizes at once unless `reuse` and factors of a system of the
-  /// same size are kept. False (with lastError()) if that factorization fails.
-  bool prepare(Eigen::SparseMatrix<double> system, const Eigen::VectorXd& shift, bool reuse,
-               const ActiveSetSettings& settings);
-  /// The impulses (the last `shift.size()` entries) of the system with its regularization taken
-  /// out again by `refinements` proximal solves; NaN if a needed factorization fails.
+  /// Makes `system` the one solve() answers; it must outlive the calls to solve(). Factorizes
+  /// at once unless `reuse` and factors of a system of the same size are kept. False (with
+  /// lastError()) if that factorization fails.
+  bool prepare(const PosedSystem& system, bool reuse, const ActiveSetSettings& settings);
+  /// x with A₀x = b: A x = b with the regularization taken out again by corrections (proximal
+  /// point steps); NaN if a needed factorization fails.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
 
   int factorizations() const { return factorizations_; }
@@ -159,12 +177,11 @@ class KeptFactorization {
   double residualScale(const Eigen::VectorXd& rhs, const Eigen::VectorXd& x) const;
 
   std::unique_ptr<Factors> factors_;
-  Eigen::SparseMatrix<double> system_;  ///< A, the system solve() answers
-  Eigen::VectorXd shift_;
+  const PosedSystem* system_ = nullptr;  ///< A, the system solve() answers
   ActiveSetSettings settings_;
-  double rowSum_ = 0.0;        ///< |A|: the largest sum of a row's magnitudes
-  bool factorsValid_ = false;  ///< the factors hold a successful factorization
-  bool fresh_ = false;         ///< the factors are system_'s own
+  Eigen::Index factoredSize_ = 0;  ///< the size of the system the factors are of
+  bool factorsValid_ = false;      ///< the factors hold a successful factorization
+  bool fresh_ = false;             ///< the factors are system_'s own
   int factorizations_ = 0;
   std::string lastError_;
 };
