@@ -264,39 +264,41 @@ TEST_CASE("an active set that fails says why, or hands the island to Lemke",
   }
 }
 
-TEST_CASE("on random piles the active set moves every body as Lemke does, in one step",
-          "[reference][active_set][random]") {
-  // Two columns of boxes of random sizes side by side, each box turned a little, thrown with a
-  // random velocity and spin, with random friction: its first step poses points of every state
-  // (sticking, sliding either way, separating), between bodies listed either way round, some
-  // overlapping and some just apart. Wherever the active set (every island, no Lemke fallback)
-  // answers, it must move each body as Lemke (every island) does: the velocities of the answer
-  // are unique on these piles. On some piles the active set cycles instead (a set of states
-  // whose equations contradict each other on dependent rows; docs/global-reference.md, "Where
-  // it still fails"): by default Lemke then takes the island; here the pile is counted.
-  std::mt19937 random(7);  // fixed seed: the same piles every run
+namespace {
+
+/// Two columns of 4 boxes of random sizes side by side, each box turned a little, thrown with a
+/// random velocity and spin, with random friction.
+Scene randomPile(std::mt19937& random) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  constexpr int kPiles = 12;
-  int answered = 0;
-  for (int pile = 0; pile < kPiles; ++pile) {
-    Scene scene = groundScene("reference", 0.6);
-    for (int column = 0; column < 2; ++column) {
-      double base = 0.0;
-      for (int level = 0; level < 4; ++level) {
-        const double width = 1.0 + 0.3 * unit(random);
-        const double height = 0.7 + 0.2 * unit(random);
-        BodyDef box = unitBoxMaterial(0.55 + 0.45 * unit(random));
-        box.shape = makeBox(width, height);
-        box.position =
-            Vec2((column == 0 ? -0.5 : 0.5) * width + 0.1 * unit(random), base + 0.5 * height);
-        box.angle = 0.02 * unit(random);
-        box.velocity = Vec2(0.5 * unit(random), 0.5 * unit(random));
-        box.angularVelocity = unit(random);
-        scene.bodies.push_back(box);
-        base += height;
-      }
+  Scene scene = groundScene("reference", 0.6);
+  for (int column = 0; column < 2; ++column) {
+    double base = 0.0;
+    for (int level = 0; level < 4; ++level) {
+      const double width = 1.0 + 0.3 * unit(random);
+      const double height = 0.7 + 0.2 * unit(random);
+      BodyDef box = unitBoxMaterial(0.55 + 0.45 * unit(random));
+      box.shape = makeBox(width, height);
+      box.position =
+          Vec2((column == 0 ? -0.5 : 0.5) * width + 0.1 * unit(random), base + 0.5 * height);
+      box.angle = 0.02 * unit(random);
+      box.velocity = Vec2(0.5 * unit(random), 0.5 * unit(random));
+      box.angularVelocity = unit(random);
+      scene.bodies.push_back(box);
+      base += height;
     }
+  }
+  return scene;
+}
+
+/// How many of `piles` random piles the active set alone (every island, no Lemke fallback)
+/// answers in their first step; each answer must move every body as Lemke (every island) does.
+int answeredLikeLemke(int piles, bool enterSliding) {
+  std::mt19937 random(7);  // fixed seed: the same piles every run
+  int answered = 0;
+  for (int pile = 0; pile < piles; ++pile) {
+    Scene scene = randomPile(random);
     ReferenceSolverSettings& settings = scene.solverSettings.reference;
+    settings.activeSet.enterSliding = enterSliding;
     settings.lemkeFallbackPoints = 0;
     settings.lemkeIslandPoints = 0;
     auto activeSet = buildWorld(scene);
@@ -319,10 +321,28 @@ TEST_CASE("on random piles the active set moves every body as Lemke does, in one
       difference = std::max({difference, (one.velocity - other.velocity).norm(),
                              std::abs(one.angularVelocity - other.angularVelocity)});
     }
-    INFO("pile " << pile << ": " << activeSet->manifolds().size() << " manifolds");
+    INFO("pile " << pile << ", enter_sliding " << enterSliding);
     CHECK(difference < 1e-9);
   }
-  std::cout << "figure: random piles answered by the active set alone: " << answered << " of "
-            << kPiles << "\n";
-  CHECK(answered >= kPiles / 2);
+  return answered;
+}
+
+}  // namespace
+
+TEST_CASE("on random piles the active set moves every body as Lemke does, in one step",
+          "[reference][active_set][random]") {
+  // The first step of a pile thrown together poses points of every state (sticking, sliding
+  // either way, separating), between bodies listed either way round, some overlapping and some
+  // just apart. Wherever the active set answers, its bodies' velocities are Lemke's (unique on
+  // these piles). On some piles it cycles instead: a closing point made to stick contradicts
+  // other states on dependent rows (docs/global-reference.md, "Where it still fails"); by default
+  // Lemke then takes the island, here the pile is counted. A point that starts touching while
+  // it slips entering sliding (enter_sliding) avoids most of those contradictions.
+  constexpr int kPiles = 12;
+  const int sliding = answeredLikeLemke(kPiles, true);
+  const int sticking = answeredLikeLemke(kPiles, false);
+  std::cout << "figure: random piles answered by the active set alone: " << sliding << " of "
+            << kPiles << " entering sliding, " << sticking << " entering sticking\n";
+  CHECK(sliding > sticking);
+  CHECK(sticking >= kPiles / 2);
 }

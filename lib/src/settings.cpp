@@ -109,6 +109,7 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
       {"max_factorizations", &s.activeSet.maxFactorizations},
       {"block_failures", &s.activeSet.blockFailures},
       {"backtrack", &s.activeSet.backtrack},
+      {"enter_sliding", &s.activeSet.enterSliding},
       {"regularization", &s.activeSet.regularization},
       {"refinements", &s.activeSet.refinements},
       {"refinement_tolerance", &s.activeSet.refinementTolerance},

@@ -402,11 +402,13 @@ class GuessSystem final : public PosedSystem {
 
 /// What the answer breaks, point by point: a pull, a closing separated point, friction beyond
 /// the cone while sticking, a slide against its friction. In N s (velocities times the point's
-/// mass), so one tolerance serves all.
+/// mass), so one tolerance serves all. A closing point takes up sticking, or with enterSliding
+/// and a slip, sliding against its slip.
 std::vector<Violation> violations(const IslandProblem& problem,
                                   const std::vector<ContactState>& states,
                                   const Eigen::VectorXd& impulses, const Eigen::VectorXd& velocity,
-                                  const Eigen::VectorXd& diagonal, double tolerance) {
+                                  const Eigen::VectorXd& diagonal, double tolerance,
+                                  bool enterSliding) {
   std::vector<Violation> found;
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
     const double mu = problem.points[static_cast<size_t>(i)].friction;
@@ -417,7 +419,11 @@ std::vector<Violation> violations(const IslandProblem& problem,
     const ContactState touching = mu > 0.0 ? ContactState::Sticking : ContactState::SlidingPositive;
     if (state == ContactState::Separated) {
       const double closing = -velocity(2 * i) / diagonal(2 * i);
-      if (closing > tolerance) found.push_back({i, touching, closing});
+      ContactState next = touching;
+      if (enterSliding && mu > 0.0 && std::abs(slip) > tolerance) {
+        next = slip > 0.0 ? ContactState::SlidingPositive : ContactState::SlidingNegative;
+      }
+      if (closing > tolerance) found.push_back({i, next, closing});
     } else if (-normal > tolerance) {
       found.push_back({i, ContactState::Separated, -normal});
     } else if (state == ContactState::Sticking && std::abs(tangent) - mu * normal > tolerance) {
@@ -719,8 +725,8 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
     answer.impulses = system.impulses(unknowns);
     const Eigen::VectorXd velocity = free + delassusTimes(problem, answer.impulses);
     const double tolerance = settings.flipTolerance * impulseScale(answer.impulses, free, diagonal);
-    const std::vector<Violation> found =
-        violations(problem, states, answer.impulses, velocity, diagonal, tolerance);
+    const std::vector<Violation> found = violations(problem, states, answer.impulses, velocity,
+                                                    diagonal, tolerance, settings.enterSliding);
     if (found.empty()) {
       answer.solved = true;
       answer.states = states;
