@@ -217,7 +217,7 @@ class Neighbours {
       c.point = j;
       const std::array<int, 2>& other = problem.points[static_cast<size_t>(j)].body;
       for (int side = 0; side < 2; ++side) {
-        std::size_t& cursor = side == 0 ? ia : ib;
+        size_t& cursor = side == 0 ? ia : ib;
         const std::vector<int>& list = side == 0 ? a : b;
         if (cursor >= list.size() || list[cursor] != j) continue;
         ++cursor;
