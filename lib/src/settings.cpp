@@ -105,6 +105,7 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
       {"keep_factors", &s.activeSet.keepFactors},
       {"kept_rounds", &s.activeSet.keptRounds},
       {"kept_tolerance", &s.activeSet.keptTolerance},
+      {"refactor_after_solves", &s.activeSet.refactorAfterSolves},
       {"diagonal_pivot_threshold", &s.activeSet.diagonalPivotThreshold},
       {"max_factorizations", &s.activeSet.maxFactorizations},
       {"block_failures", &s.activeSet.blockFailures},

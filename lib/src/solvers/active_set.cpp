@@ -568,7 +568,7 @@ bool KeptFactorization::prepare(const PosedSystem& system, bool reuse,
   system_ = &system;
   settings_ = settings;
   fresh_ = false;
-  if (!reuse || !sameSize) return factorize();
+  if (!reuse || !sameSize || extraSolves_ >= settings.refactorAfterSolves) return factorize();
   return true;
 }
 
@@ -582,6 +582,7 @@ bool KeptFactorization::factorize() {
   factors_->compute(system_->matrix(), settings_.diagonalPivotThreshold);
   factoredSize_ = system_->size();
   ++factorizations_;
+  extraSolves_ = 0;
   fresh_ = factorsValid_ = factors_->lu.info() == Eigen::Success;
   if (!fresh_) lastError_ = factors_->lu.lastErrorMessage();
   return fresh_;
@@ -601,7 +602,7 @@ std::pair<double, double> givens(double a, double b) {
 /// the Krylov space of A K⁻¹ holds what K misses. A system whose values moved a little needs a
 /// round or two, one with k rows changed (k states flipped since K) about k + 1. False if the
 /// residual is not at round-off within keptRounds (K is too far from A).
-bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
+bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
   const int rounds = settings_.keptRounds;
   x = factors_->solve(rhs);
   const double tolerance = settings_.keptTolerance * residualScale(rhs, x);
@@ -615,6 +616,7 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
   Eigen::VectorXd g = Eigen::VectorXd::Zero(rounds + 1);
   g(0) = beta;
   for (int j = 0; j < rounds; ++j) {
+    ++extraSolves_;
     preconditioned.push_back(factors_->solve(basis[static_cast<size_t>(j)]));
     Eigen::VectorXd w = system_->times(preconditioned.back());
     for (int i = 0; i <= j; ++i) {
@@ -653,7 +655,7 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
 /// factors K only approximates A and each correction still shrinks the residual by about
 /// |K⁻¹(A − K)| + |S|: one correction instead of a GMRES solve per proximal step. False if a
 /// solve on kept factors does not reach its tolerance (the caller then factorizes).
-bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
+bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
   if (fresh_) {
     x = factors_->solve(rhs);
   } else if (!solveOnKeptFactors(rhs, x)) {
@@ -667,6 +669,7 @@ bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorX
       return true;
     }
     if (k == corrections) return fresh_;
+    if (!fresh_ && k > 0) ++extraSolves_;
     x += factors_->solve(residual);
   }
 }

@@ -150,7 +150,9 @@ class PosedSystem {
 /// A K⁻¹ holds the rest in about one round per changed row, each round two triangular solves
 /// and a product through the bodies instead of an assembly and a factorization. A system not
 /// solved to round-off within keptRounds (many states flipped, another island) is factorized
-/// after all; the answer is the same either way.
+/// after all; the answer is the same either way. A settling pile drifts from its kept factors and
+/// needs a round every step: once such extra solves reach refactorAfterSolves, about a
+/// factorization's cost, the next system is factorized afresh.
 class KeptFactorization {
  public:
   KeptFactorization();
@@ -172,8 +174,8 @@ class KeptFactorization {
  private:
   struct Factors;
   bool factorize();
-  bool solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
-  bool solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const;
+  bool solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x);
+  bool solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x);
   double residualScale(const Eigen::VectorXd& rhs, const Eigen::VectorXd& x) const;
 
   std::unique_ptr<Factors> factors_;
@@ -183,6 +185,7 @@ class KeptFactorization {
   bool factorsValid_ = false;      ///< the factors hold a successful factorization
   bool fresh_ = false;             ///< the factors are system_'s own
   int factorizations_ = 0;
+  int extraSolves_ = 0;  ///< solves on kept factors beyond two a system, since they were made
   std::string lastError_;
 };
 
