@@ -112,6 +112,7 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
       {"backtrack", &s.activeSet.backtrack},
       {"enter_sliding", &s.activeSet.enterSliding},
       {"regularization", &s.activeSet.regularization},
+      {"centre_on_guess", &s.activeSet.centreOnGuess},
       {"refinements", &s.activeSet.refinements},
       {"refinement_tolerance", &s.activeSet.refinementTolerance},
       {"flip_tolerance", &s.activeSet.flipTolerance}};

@@ -259,6 +259,11 @@ struct ActiveSetSettings {
   /// velocities it causes is taken out again by corrections centred on the last answer
   /// (`refinements`).
   double regularization = 1e-8;
+  /// The regularization is centred on the guess (last step's impulses at a point carried over,
+  /// the sweeps' at a new one) instead of on zero: a resting pile's answer then needs no
+  /// correction after its first solve, and redundant contacts keep the split they had. Off:
+  /// centred on zero, the split the first solve chooses.
+  bool centreOnGuess = true;
   /// Most corrections on fresh factors that take the regularization's shift out (proximal point
   /// steps; each removes all but about `regularization` of what is left, so one usually does).
   /// On kept factors the corrections may go on for up to keptRounds.

@@ -296,6 +296,15 @@ class GuessSystem final : public PosedSystem {
     return columns.take();
   }
 
+  /// The unknowns x that hold these impulses (λn, and λt of a sticking point).
+  Eigen::VectorXd unknownsOf(const Eigen::VectorXd& impulses) const {
+    Eigen::VectorXd x(size());
+    for (int i = 0; i < pointCount(); ++i) {
+      for (int axis = 0; axis < rowsOf(i); ++axis) x(row(i, axis)) = impulses(2 * i + axis);
+    }
+    return x;
+  }
+
   /// The impulses (λn, λt per point) of the system's answer x.
   Eigen::VectorXd impulses(const Eigen::VectorXd& x) const {
     Eigen::VectorXd all = Eigen::VectorXd::Zero(2 * pointCount());
@@ -512,28 +521,34 @@ class FlipRule {
   std::vector<Violation> bestFound_;  ///< the best states' violators, the worst first
 };
 
+/// The first guess: each point's state and the impulses the regularization is centred on.
+struct Guess {
+  std::vector<ContactState> states;
+  Eigen::VectorXd impulses;  ///< (λn, λt) per point; zero unless centreOnGuess
+};
+
 /// Each point's first state: with warmStates, a point solved last step takes the state it was
 /// solved in (or, solved by Lemke or another method, the state of its impulses); the others
 /// (all of them without warmStates) the state the Gauss–Seidel sweeps from the guess give, and
-/// the sweeps run only if some point needs them.
-std::vector<ContactState> guessStates(const IslandProblem& problem, const Eigen::VectorXd& free,
-                                      const Eigen::VectorXd& diagonal,
-                                      const ActiveSetSettings& settings) {
+/// the sweeps run only if some point needs them. The impulses are those the state came from.
+Guess firstGuess(const IslandProblem& problem, const Eigen::VectorXd& free,
+                 const Eigen::VectorXd& diagonal, const ActiveSetSettings& settings) {
   const Eigen::VectorXd swept = needsGuessSweeps(problem, settings)
                                     ? gaussSeidelGuess(problem, free, diagonal, settings)
                                     : Eigen::VectorXd();
-  std::vector<ContactState> states(problem.points.size());
+  Guess guess{std::vector<ContactState>(problem.points.size()),
+              Eigen::VectorXd::Zero(problem.guess.size())};
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
     const IslandPoint& point = problem.points[static_cast<size_t>(i)];
-    if (startsFromLastStep(point, settings) && point.lastState != ContactState::Unknown) {
-      states[static_cast<size_t>(i)] = point.lastState;
-      continue;
-    }
     const Eigen::VectorXd& impulses = startsFromLastStep(point, settings) ? problem.guess : swept;
-    states[static_cast<size_t>(i)] =
-        stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), point.friction);
+    if (settings.centreOnGuess) guess.impulses.segment<2>(2 * i) = impulses.segment<2>(2 * i);
+    const bool carried =
+        startsFromLastStep(point, settings) && point.lastState != ContactState::Unknown;
+    guess.states[static_cast<size_t>(i)] =
+        carried ? point.lastState
+                : stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), point.friction);
   }
-  return states;
+  return guess;
 }
 
 }  // namespace
@@ -655,10 +670,12 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
 /// factors K only approximates A and each correction still shrinks the residual by about
 /// |K⁻¹(A − K)| + |S|: one correction instead of a GMRES solve per proximal step. False if a
 /// solve on kept factors does not reach its tolerance (the caller then factorizes).
-bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, const Eigen::VectorXd& centre,
+                                      Eigen::VectorXd& x) {
+  const Eigen::VectorXd centred = rhs + system_->shift().cwiseProduct(centre);
   if (fresh_) {
-    x = factors_->solve(rhs);
-  } else if (!solveOnKeptFactors(rhs, x)) {
+    x = factors_->solve(centred);
+  } else if (!solveOnKeptFactors(centred, x)) {
     return false;
   }
   const int corrections = fresh_ ? settings_.refinements : settings_.keptRounds;
@@ -674,11 +691,12 @@ bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorX
   }
 }
 
-Eigen::VectorXd KeptFactorization::solve(const Eigen::VectorXd& rhs) {
+Eigen::VectorXd KeptFactorization::solve(const Eigen::VectorXd& rhs,
+                                         const Eigen::VectorXd& centre) {
   Eigen::VectorXd x;
-  if (!fresh_ && solveProximal(rhs, x)) return x;
+  if (!fresh_ && solveProximal(rhs, centre, x)) return x;
   if (!fresh_ && !factorize()) return Eigen::VectorXd::Constant(rhs.size(), std::nan(""));
-  solveProximal(rhs, x);
+  solveProximal(rhs, centre, x);
   return x;
 }
 
@@ -694,7 +712,8 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
                                KeptFactorization& kept) {
   const Eigen::VectorXd diagonal = delassusDiagonal(problem);
   const Eigen::VectorXd free = freeVelocity(problem);
-  std::vector<ContactState> states = guessStates(problem, free, diagonal, settings);
+  const Guess guess = firstGuess(problem, free, diagonal, settings);
+  std::vector<ContactState> states = guess.states;
   std::optional<Neighbours> neighbours;  // W's pattern, built at the first factorization
   FlipRule flips(settings);
   ActiveSetAnswer answer;
@@ -718,7 +737,9 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
     const bool prepared =
         system.size() == 0 || kept.prepare(system, firstSystem && settings.keepFactors, settings);
     firstSystem = false;
-    if (prepared && system.size() > 0) unknowns = kept.solve(system.rhs());
+    if (prepared && system.size() > 0) {
+      unknowns = kept.solve(system.rhs(), system.unknownsOf(guess.impulses));
+    }
     answer.factorizations = kept.factorizations() - factorizationsBefore;
     if (!prepared || !unknowns.allFinite()) {
       answer.failure = "active set: singular system at factorization " +

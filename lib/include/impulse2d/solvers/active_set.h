@@ -164,9 +164,10 @@ class KeptFactorization {
   /// at once unless `reuse` and factors of a system of the same size are kept. False (with
   /// lastError()) if that factorization fails.
   bool prepare(const PosedSystem& system, bool reuse, const ActiveSetSettings& settings);
-  /// x with A₀x = b: A x = b with the regularization taken out again by corrections (proximal
-  /// point steps); NaN if a needed factorization fails.
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+  /// x with A₀x = b: A x = b + S·centre, the regularization centred on `centre` (a guess of x),
+  /// then corrections (proximal point steps) that take what is left of it out; NaN if a needed
+  /// factorization fails. A centre within ε of the answer leaves r·ε to take out.
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs, const Eigen::VectorXd& centre);
 
   int factorizations() const { return factorizations_; }
   const std::string& lastError() const { return lastError_; }
@@ -175,7 +176,7 @@ class KeptFactorization {
   struct Factors;
   bool factorize();
   bool solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x);
-  bool solveProximal(const Eigen::VectorXd& rhs, Eigen::VectorXd& x);
+  bool solveProximal(const Eigen::VectorXd& rhs, const Eigen::VectorXd& centre, Eigen::VectorXd& x);
   double residualScale(const Eigen::VectorXd& rhs, const Eigen::VectorXd& x) const;
 
   std::unique_ptr<Factors> factors_;
