@@ -282,12 +282,12 @@ struct ActiveSetSettings {
   /// many corrections that take the regularization out: each costs one solve with the factors,
   /// about 1/30 of a factorization of a 20-row pyramid's system.
   int keptRounds = 8;
-  /// Solves with kept factors beyond the two a resting step needs (GMRES rounds, further
-  /// corrections), summed since the factors were made, after which the next system is
-  /// factorized afresh. A factorization of a 40-row pyramid's system costs about 44 solves
-  /// (35 ms against 0.79 ms), so a pile whose kept factors have drifted from it pays at most
-  /// about twice what a factorization at the right moment would cost, and one that rests on
-  /// them pays nothing more.
+  /// Solves with kept factors beyond a system's first solve and first correction (GMRES
+  /// rounds, further corrections), summed since the factors were made, after which the next
+  /// system is factorized afresh. A factorization of a 40-row pyramid's system costs about 44
+  /// solves (35 ms against 0.79 ms), so a pile whose kept factors have drifted from it pays at
+  /// most about twice what a factorization at the right moment would cost, and one that rests
+  /// on them pays nothing more.
   int refactorAfterSolves = 40;
   /// A solve on kept factors is done once the residual of A x = b is below this fraction of
   /// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.

@@ -662,11 +662,12 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
 }
 
 /// x with A₀x = rhs, A₀ the system without its regularization S (A = A₀ + S): one solve of
-/// A x = rhs (on the fresh factors, or by GMRES on kept ones), then corrections
+/// A x = rhs + S·centre (on the fresh factors, or by GMRES on kept ones), then corrections
 /// x += K⁻¹(rhs − A₀x) by the factors K until A₀'s residual is below refinementTolerance of its
 /// scale: at most `refinements` on fresh factors, `keptRounds` on kept ones. On fresh factors
 /// (K = A) each correction is a proximal point step, the solve of A x' = rhs + S x, so the
-/// velocity rows end exact while redundant contacts keep the split the first solve chose. On kept
+/// velocity rows end exact while redundant contacts keep the split the first solve chose, near
+/// the centre's. A centre within ε of the answer leaves about r·ε, often none to correct. On kept
 /// factors K only approximates A and each correction still shrinks the residual by about
 /// |K⁻¹(A − K)| + |S|: one correction instead of a GMRES solve per proximal step. False if a
 /// solve on kept factors does not reach its tolerance (the caller then factorizes).

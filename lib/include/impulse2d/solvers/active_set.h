@@ -186,7 +186,7 @@ class KeptFactorization {
   bool factorsValid_ = false;      ///< the factors hold a successful factorization
   bool fresh_ = false;             ///< the factors are system_'s own
   int factorizations_ = 0;
-  int extraSolves_ = 0;  ///< solves on kept factors beyond two a system, since they were made
+  int extraSolves_ = 0;  ///< kept factors' solves beyond a system's first two, since made
   std::string lastError_;
 };
 
