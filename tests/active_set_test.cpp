@@ -221,7 +221,7 @@ TEST_CASE("centred on the guess, a pyramid's first step from rest takes fewer fa
           "[reference][active_set][pyramid][centre]") {
   // The regularization r·D pulls each system's answer towards its centre. Centred on zero, the
   // first answers of a pile from rest spread its weight over the redundant contacts by least
-  // r·D-norm, which pulls at some of them; centred on the Gauss–Seidel sweeps' answer (every
+  // r·D-norm, which can pull at some of them; centred on the Gauss–Seidel sweeps' answer (every
   // point in its cone), they keep the sweeps' split, and fewer states flip. The pile is at rest
   // either way: the same weight on the ground, no body moving.
   constexpr int kRows = 20;
