@@ -50,6 +50,7 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
     if (++report_.iterations == roundEnd) {
       recordRound();
       roundEnd += points;
+      if (report_.iterations < cap && stalled()) break;
     }
     if (report_.iterations >= cap && !stillProgressing()) break;
   }
@@ -59,23 +60,40 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   storeVelocities(context);
 }
 
-// After every round of one impulse per point (with passCapWhileProgressing), the total desired
-// velocity change of the points still waiting: the queue's keys.
+// After every round of one impulse per point (with passCapWhileProgressing or stopWhenStalled),
+// the total desired velocity change of the points still waiting: the queue's keys.
 void MicroCollisionSolver::recordRound() {
-  if (settings_.passCapWhileProgressing) waitingTotals_.push_back(queue_.waitingTotal());
+  if (settings_.passCapWhileProgressing || settings_.stopWhenStalled) {
+    waitingTotals_.push_back(queue_.waitingTotal());
+  }
+}
+
+// Whether the waiting total fell by at least `fraction` over the last `span` rounds. A span of no
+// rounds, or fewer rounds than the span, never shows progress.
+bool MicroCollisionSolver::fellBy(double fraction, int span) const {
+  const int rounds = int(waitingTotals_.size());
+  if (span < 1 || rounds <= span) return false;
+  const double before = waitingTotals_[rounds - 1 - span];
+  return waitingTotals_.back() <= (1.0 - fraction) * before;
 }
 
 // Whether the impulses may go on past the cap: the waiting total fell by at least minimumProgress
 // over the last progressRounds rounds. A pile passing its weight down from rest converges at a
 // steady rate until it is resolved; a pile hit every step (rain landing) soon creeps along
-// Gauss–Seidel's slow tail, where the impulses left would buy little. A span of no rounds never
-// shows progress.
+// Gauss–Seidel's slow tail, where the impulses left would buy little.
 bool MicroCollisionSolver::stillProgressing() const {
+  return settings_.passCapWhileProgressing &&
+         fellBy(settings_.minimumProgress, settings_.progressRounds);
+}
+
+// Whether the impulses stop before the cap (stopWhenStalled): no point needs more than
+// stallWorst, and over the last stallRounds rounds the waiting total fell by less than
+// stallProgress.
+bool MicroCollisionSolver::stalled() {
   const int rounds = int(waitingTotals_.size());
-  const int span = settings_.progressRounds;
-  if (!settings_.passCapWhileProgressing || span < 1 || rounds <= span) return false;
-  const double before = waitingTotals_[rounds - 1 - span];
-  return waitingTotals_.back() <= (1.0 - settings_.minimumProgress) * before;
+  return settings_.stopWhenStalled && rounds > settings_.stallRounds && !queue_.empty() &&
+         queue_.worstKey() <= settings_.stallWorst &&
+         !fellBy(settings_.stallProgress, settings_.stallRounds);
 }
 
 void MicroCollisionSolver::prepare(const StepContext& context) {
@@ -495,10 +513,13 @@ void MicroCollisionSolver::refreshContactVelocities(const StepContext& context, 
 
 void MicroCollisionSolver::solvePositions(const StepContext& context) {
   loadPoses(context);
+  movePoints_.clear();
   queueKeys_.clear();
-  for (PointState& state : states_) {
-    state.penetration = penetrationNow(state);
-    queueKeys_.push_back(state.penetration);
+  for (const PointState& state : states_) {
+    MovePoint point{state.bodyA, state.bodyB, 0.0, state.normal, state.anchorA, state.anchorB};
+    point.penetration = penetrationNow(point);
+    movePoints_.push_back(point);
+    queueKeys_.push_back(point.penetration);
   }
   queue_.reset(queueKeys_, settings_.positionEpsilon);
   const int maxIterations = settings_.positionIterationsPerContact * int(states_.size());
@@ -536,9 +557,9 @@ void MicroCollisionSolver::storePose(const StepContext& context, int body) {
 }
 
 // A point's penetration at the poses now: the anchor on A minus the anchor on B, along the normal.
-double MicroCollisionSolver::penetrationNow(const PointState& state) const {
-  return (poses_[state.bodyA].toWorld(state.anchorA) - poses_[state.bodyB].toWorld(state.anchorB))
-      .dot(state.normal);
+double MicroCollisionSolver::penetrationNow(const MovePoint& point) const {
+  return (poses_[point.bodyA].toWorld(point.anchorA) - poses_[point.bodyB].toWorld(point.anchorB))
+      .dot(point.normal);
 }
 
 int MicroCollisionSolver::worstPenetration() {
@@ -555,9 +576,9 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
 }
 
 // The contact point now: midway between the anchors on the two surfaces at the current poses.
-Vec2 MicroCollisionSolver::contactPointNow(const PointState& state) const {
+Vec2 MicroCollisionSolver::contactPointNow(const MovePoint& point) const {
   return 0.5 *
-         (poses_[state.bodyA].toWorld(state.anchorA) + poses_[state.bodyB].toWorld(state.anchorB));
+         (poses_[point.bodyA].toWorld(point.anchorA) + poses_[point.bodyB].toWorld(point.anchorB));
 }
 
 // The other point of the manifold of states_[index], or −1 for a one-point manifold. prepare
@@ -580,14 +601,14 @@ int MicroCollisionSolver::otherPoint(int index) const {
 // ill-conditioned or a turn would pass the angular move limit: the point is then resolved alone.
 bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, int partner,
                                        int iteration) {
-  const std::array<const PointState*, 2> states = {&states_[index], &states_[partner]};
-  Pose& a = poses_[states[0]->bodyA];
-  Pose& b = poses_[states[0]->bodyB];
-  const Vec2 normal = states[0]->normal;
+  const std::array<const MovePoint*, 2> points = {&movePoints_[index], &movePoints_[partner]};
+  Pose& a = poses_[points[0]->bodyA];
+  Pose& b = poses_[points[0]->bodyB];
+  const Vec2 normal = points[0]->normal;
   std::array<double, 2> torqueArmA{};
   std::array<double, 2> torqueArmB{};
   for (int i = 0; i < 2; ++i) {
-    const Vec2 point = contactPointNow(*states[i]);
+    const Vec2 point = contactPointNow(*points[i]);
     torqueArmA[i] = cross(Vec2(point - a.position), normal);
     torqueArmB[i] = cross(Vec2(point - b.position), normal);
   }
@@ -599,20 +620,22 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
     }
   }
   if (!isWellConditioned(k, settings_.pairConditionLimit)) return false;
-  const Vec2 x = solveTwoPointLcp(k, Vec2(-states[0]->penetration, -states[1]->penetration));
+  const Vec2 x = solveTwoPointLcp(k, Vec2(-points[0]->penetration, -points[1]->penetration));
   const double turnA = -a.inverseInertia * (torqueArmA[0] * x(0) + torqueArmA[1] * x(1));
   const double turnB = b.inverseInertia * (torqueArmB[0] * x(0) + torqueArmB[1] * x(1));
   if (std::max(std::abs(turnA), std::abs(turnB)) > settings_.angularMoveLimit) return false;
-  const std::array<double, 2> removed = {states[0]->penetration, states[1]->penetration};
+  const std::array<double, 2> removed = {points[0]->penetration, points[1]->penetration};
   for (auto [pose, sign, turn] : {std::tuple{&a, -1.0, turnA}, std::tuple{&b, 1.0, turnB}}) {
     if (!pose->movable) continue;
     pose->position += sign * pose->inverseMass * (x(0) + x(1)) * normal;
     pose->turnBy(turn);
     pose->moved = true;
   }
-  afterMove(context, *states[0]);
+  afterMove(context, *points[0]);
+  const std::array<int, 2> indices = {index, partner};
   for (int i = 0; i < 2; ++i) {
-    context.report({SolverEvent::Phase::Position, iteration, states[i]->manifold, states[i]->point,
+    const PointState& state = states_[indices[i]];
+    context.report({SolverEvent::Phase::Position, iteration, state.manifold, state.point,
                     removed[i], 0.0, 0.0});
   }
   return true;
@@ -620,33 +643,33 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
 
 // After a move at a point: the penetrations of every point sharing one of its bodies (and their
 // places in the queue), and in a traced step the bodies as the move left them.
-void MicroCollisionSolver::afterMove(const StepContext& context, const PointState& state) {
-  refreshPenetrations(state.bodyA, -1);
-  refreshPenetrations(state.bodyB, poses_[state.bodyA].movable ? state.bodyA : -1);
+void MicroCollisionSolver::afterMove(const StepContext& context, const MovePoint& point) {
+  refreshPenetrations(point.bodyA, -1);
+  refreshPenetrations(point.bodyB, poses_[point.bodyA].movable ? point.bodyA : -1);
   if (context.observer) {
-    storePose(context, state.bodyA);
-    storePose(context, state.bodyB);
+    storePose(context, point.bodyA);
+    storePose(context, point.bodyB);
   }
 }
 
 // One point alone: Millington's move.
 void MicroCollisionSolver::resolvePoint(const StepContext& context, int index, int iteration) {
-  const PointState& state = states_[index];
-  Pose& a = poses_[state.bodyA];
-  Pose& b = poses_[state.bodyB];
-  const Vec2 point = contactPointNow(state);
-  const Vec2 armA = point - a.position;
-  const Vec2 armB = point - b.position;
-  const double torqueArmA = cross(armA, state.normal);
-  const double torqueArmB = cross(armB, state.normal);
+  const MovePoint& point = movePoints_[index];
+  Pose& a = poses_[point.bodyA];
+  Pose& b = poses_[point.bodyB];
+  const Vec2 at = contactPointNow(point);
+  const Vec2 armA = at - a.position;
+  const Vec2 armB = at - b.position;
+  const double torqueArmA = cross(armA, point.normal);
+  const double torqueArmB = cross(armB, point.normal);
   const double inertiaAtContact = a.inverseMass + a.inverseInertia * torqueArmA * torqueArmA +
                                   b.inverseMass + b.inverseInertia * torqueArmB * torqueArmB;
-  const double penetration = state.penetration;
-  moveBody(a, armA, -state.normal, penetration, inertiaAtContact);
-  moveBody(b, armB, state.normal, penetration, inertiaAtContact);
-  afterMove(context, state);
-  context.report({SolverEvent::Phase::Position, iteration, state.manifold, state.point, penetration,
-                  0.0, 0.0});
+  const double penetration = point.penetration;
+  moveBody(a, armA, -point.normal, penetration, inertiaAtContact);
+  moveBody(b, armB, point.normal, penetration, inertiaAtContact);
+  afterMove(context, point);
+  context.report({SolverEvent::Phase::Position, iteration, states_[index].manifold,
+                  states_[index].point, penetration, 0.0, 0.0});
 }
 
 // Moves one body its share of the penetration along direction: linear and angular shares in
@@ -678,10 +701,10 @@ void MicroCollisionSolver::moveBody(Pose& body, const Vec2& arm, const Vec2& dir
 void MicroCollisionSolver::refreshPenetrations(int bodyIndex, int refreshedBody) {
   if (!poses_[bodyIndex].movable) return;
   for (int i = contactsOfBodyStart_[bodyIndex]; i < contactsOfBodyStart_[bodyIndex + 1]; ++i) {
-    PointState& state = states_[contactsOfBody_[i]];
-    if (state.bodyA == refreshedBody || state.bodyB == refreshedBody) continue;
-    state.penetration = penetrationNow(state);
-    queue_.update(contactsOfBody_[i], state.penetration);
+    MovePoint& point = movePoints_[contactsOfBody_[i]];
+    if (point.bodyA == refreshedBody || point.bodyB == refreshedBody) continue;
+    point.penetration = penetrationNow(point);
+    queue_.update(contactsOfBody_[i], point.penetration);
   }
 }
 

@@ -45,30 +45,39 @@ class MicroCollisionSolver : public ContactSolver {
       sine = std::sin(angle);
     }
   };
-  struct PointState {
-    // What the penetration phase reads, together ...
+  /// A contact point in the velocity phase, laid out by use in two cache lines: the first holds
+  /// what refreshing its contact velocity reads, the second what its severity and an impulse
+  /// read and write; what only an impulse or the penetration phase needs comes after.
+  struct alignas(64) PointState {
+    int bodyA = 0;
+    int bodyB = 0;
+    double penetration = 0.0;    ///< m, at the step's start (the penetration phase: MovePoint)
+    Vec2 normal = Vec2::Zero();  ///< from A to B
+    Vec2 armA = Vec2::Zero();    ///< contact point minus A's centre (fixed while solving)
+    Vec2 armB = Vec2::Zero();    ///< contact point minus B's centre
+    Vec2 contactVelocity = Vec2::Zero();  ///< (normal, tangent) relative velocity now
+    Vec2 totalImpulse = Vec2::Zero();     ///< (normal, tangent) applied here in this update
+    double accelerationVelocity = 0.0;    ///< vacc: the last update's acceleration along n, m/s
+    double restitution = 0.0;             ///< the manifold's mixed coefficient
+    /// Set by each impulse; at the step's start, the state the carried totals give (prepare).
+    FrictionState friction = FrictionState::None;
+    bool bounced = false;  ///< had its bounce this step (targetNormalVelocity)
+    int pair = -1;  ///< index into pairs_ when pair impulses may resolve it with its other point
+    int manifold = 0;
+    int point = 0;
+    Vec2 anchorA = Vec2::Zero();               ///< the point on A's surface, in A's frame
+    Vec2 anchorB = Vec2::Zero();               ///< the point on B's surface, in B's frame
+    Mat2 contactMatrix = Mat2::Zero();         ///< unit impulse -> velocity change
+    Mat2 inverseContactMatrix = Mat2::Zero();  ///< velocity change -> impulse
+  };
+  /// A contact point in the penetration phase: what a move reads and refreshes, one cache line.
+  struct alignas(64) MovePoint {
     int bodyA = 0;
     int bodyB = 0;
     double penetration = 0.0;     ///< m, kept current while bodies move
     Vec2 normal = Vec2::Zero();   ///< from A to B
     Vec2 anchorA = Vec2::Zero();  ///< the point on A's surface, in A's frame
     Vec2 anchorB = Vec2::Zero();  ///< the point on B's surface, in B's frame
-    // ... then what the velocity phase adds ...
-    Vec2 armA = Vec2::Zero();             ///< contact point minus A's centre (fixed while solving)
-    Vec2 armB = Vec2::Zero();             ///< contact point minus B's centre
-    Vec2 contactVelocity = Vec2::Zero();  ///< (normal, tangent) relative velocity now
-    Vec2 totalImpulse = Vec2::Zero();     ///< (normal, tangent) applied here in this update
-    double accelerationVelocity = 0.0;    ///< vacc: the last update's acceleration along n, m/s
-    double restitution = 0.0;             ///< the manifold's mixed coefficient
-    bool bounced = false;                 ///< had its bounce this step (targetNormalVelocity)
-    /// Set by each impulse; at the step's start, the state the carried totals give (prepare).
-    FrictionState friction = FrictionState::None;
-    // ... and what only an impulse needs.
-    int manifold = 0;
-    int point = 0;
-    Mat2 contactMatrix = Mat2::Zero();         ///< unit impulse -> velocity change
-    Mat2 inverseContactMatrix = Mat2::Zero();  ///< velocity change -> impulse
-    int pair = -1;  ///< index into pairs_ when pair impulses may resolve it with its other point
   };
   /// The two points of a manifold as one micro-collision: states_[first] and states_[first + 1].
   struct PointPair {
@@ -102,7 +111,9 @@ class MicroCollisionSolver : public ContactSolver {
   bool toBounce(const PointState& state) const;
   int worstVelocityPoint();
   void recordRound();
+  bool fellBy(double fraction, int span) const;
   bool stillProgressing() const;
+  bool stalled();
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
                        const Vec2& desiredChange, FrictionState& frictionState) const;
   void applyVelocityChange(const StepContext& context, int index, int iteration);
@@ -112,13 +123,13 @@ class MicroCollisionSolver : public ContactSolver {
   void resolvePenetration(const StepContext& context, int index, int iteration);
   void resolvePoint(const StepContext& context, int index, int iteration);
   int otherPoint(int index) const;
-  void afterMove(const StepContext& context, const PointState& state);
+  void afterMove(const StepContext& context, const MovePoint& point);
   bool resolvePair(const StepContext& context, int index, int partner, int iteration);
-  Vec2 contactPointNow(const PointState& state) const;
+  Vec2 contactPointNow(const MovePoint& point) const;
   void loadPoses(const StepContext& context);
   void storePoses(const StepContext& context);
   void storePose(const StepContext& context, int body);
-  double penetrationNow(const PointState& state) const;
+  double penetrationNow(const MovePoint& point) const;
   void moveBody(Pose& body, const Vec2& arm, const Vec2& direction, double penetration,
                 double totalInertia) const;
   void refreshPenetrations(int bodyIndex, int refreshedBody);
@@ -127,6 +138,7 @@ class MicroCollisionSolver : public ContactSolver {
   std::vector<SolverBody> solverBodies_;  ///< by body, during the velocity phase
   std::vector<Pose> poses_;               ///< by body, during the penetration phase
   std::vector<PointState> states_;
+  std::vector<MovePoint> movePoints_;  ///< by point, as states_, during the penetration phase
   std::vector<PointPair> pairs_;
   std::vector<int>
       contactsOfBodyStart_;  ///< states_ of body i: contactsOfBody_[start[i], start[i+1])
