@@ -25,7 +25,6 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.pairBounces = false;
   settings.pairMoves = false;
   settings.passCapWhileProgressing = false;
-  settings.stopWhenStalled = false;
   settings.positionEpsilon = 1e-5;
   return settings;
 }
@@ -52,10 +51,6 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"progress_rounds", &s.progressRounds},
           {"minimum_progress", &s.minimumProgress},
           {"velocity_iterations_per_contact_limit", &s.velocityIterationsPerContactLimit},
-          {"stop_when_stalled", &s.stopWhenStalled},
-          {"stall_rounds", &s.stallRounds},
-          {"stall_progress", &s.stallProgress},
-          {"stall_worst", &s.stallWorst},
           {"pair_condition_limit", &s.pairConditionLimit}};
 }
 

@@ -123,20 +123,6 @@ struct MicroCollisionSettings {
   double minimumProgress = 0.2;
   /// Most impulses per contact point in a step when passing the cap.
   int velocityIterationsPerContactLimit = 1000;
-  /// Stop when stalled: before the cap, the impulses stop once no point needs more than
-  /// stallWorst and the waiting total fell by less than stallProgress over the last stallRounds
-  /// rounds. A settled heap of discs holds tangential self-stresses that worst first circulates
-  /// without end (rain at 60 Hz: the waiting total near 0.05 m/s over 2,155 points for 170
-  /// rounds, the worst point 2e-4 m/s, one point's friction total creeping by 1e-5 N s an
-  /// impulse); a pile from rest falls 26 % over 20 rounds. Off: the impulses go on to the cap.
-  bool stopWhenStalled = true;
-  /// Rounds of one impulse per point over which a stall is measured (at least 1).
-  int stallRounds = 10;
-  /// The fraction by which the waiting total must fall over stallRounds rounds for the impulses
-  /// to go on before the cap.
-  double stallProgress = 0.05;
-  /// m/s. A step stops stalled only when no point needs a larger velocity change than this.
-  double stallWorst = 1e-3;
   /// A pair is resolved together only when its matrix is this well conditioned: for a move,
   /// k₀₀² < limit · det K (Box2D 2.4's test); for an impulse, det K > (product of K's diagonal) /
   /// limit. A narrower pair (two points almost at one place) is resolved one point at a time.

@@ -50,7 +50,6 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
     if (++report_.iterations == roundEnd) {
       recordRound();
       roundEnd += points;
-      if (report_.iterations < cap && stalled()) break;
     }
     if (report_.iterations >= cap && !stillProgressing()) break;
   }
@@ -60,40 +59,23 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   storeVelocities(context);
 }
 
-// After every round of one impulse per point (with passCapWhileProgressing or stopWhenStalled),
-// the total desired velocity change of the points still waiting: the queue's keys.
+// After every round of one impulse per point (with passCapWhileProgressing), the total desired
+// velocity change of the points still waiting: the queue's keys.
 void MicroCollisionSolver::recordRound() {
-  if (settings_.passCapWhileProgressing || settings_.stopWhenStalled) {
-    waitingTotals_.push_back(queue_.waitingTotal());
-  }
-}
-
-// Whether the waiting total fell by at least `fraction` over the last `span` rounds. A span of no
-// rounds, or fewer rounds than the span, never shows progress.
-bool MicroCollisionSolver::fellBy(double fraction, int span) const {
-  const int rounds = int(waitingTotals_.size());
-  if (span < 1 || rounds <= span) return false;
-  const double before = waitingTotals_[rounds - 1 - span];
-  return waitingTotals_.back() <= (1.0 - fraction) * before;
+  if (settings_.passCapWhileProgressing) waitingTotals_.push_back(queue_.waitingTotal());
 }
 
 // Whether the impulses may go on past the cap: the waiting total fell by at least minimumProgress
 // over the last progressRounds rounds. A pile passing its weight down from rest converges at a
 // steady rate until it is resolved; a pile hit every step (rain landing) soon creeps along
-// Gauss–Seidel's slow tail, where the impulses left would buy little.
+// Gauss–Seidel's slow tail, where the impulses left would buy little. A span of no rounds never
+// shows progress.
 bool MicroCollisionSolver::stillProgressing() const {
-  return settings_.passCapWhileProgressing &&
-         fellBy(settings_.minimumProgress, settings_.progressRounds);
-}
-
-// Whether the impulses stop before the cap (stopWhenStalled): no point needs more than
-// stallWorst, and over the last stallRounds rounds the waiting total fell by less than
-// stallProgress.
-bool MicroCollisionSolver::stalled() {
   const int rounds = int(waitingTotals_.size());
-  return settings_.stopWhenStalled && rounds > settings_.stallRounds && !queue_.empty() &&
-         queue_.worstKey() <= settings_.stallWorst &&
-         !fellBy(settings_.stallProgress, settings_.stallRounds);
+  const int span = settings_.progressRounds;
+  if (!settings_.passCapWhileProgressing || span < 1 || rounds <= span) return false;
+  const double before = waitingTotals_[rounds - 1 - span];
+  return waitingTotals_.back() <= (1.0 - settings_.minimumProgress) * before;
 }
 
 void MicroCollisionSolver::prepare(const StepContext& context) {

@@ -111,9 +111,7 @@ class MicroCollisionSolver : public ContactSolver {
   bool toBounce(const PointState& state) const;
   int worstVelocityPoint();
   void recordRound();
-  bool fellBy(double fraction, int span) const;
   bool stillProgressing() const;
-  bool stalled();
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
                        const Vec2& desiredChange, FrictionState& frictionState) const;
   void applyVelocityChange(const StepContext& context, int index, int iteration);
