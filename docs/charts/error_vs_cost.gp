@@ -4,10 +4,10 @@
 # be split between a face's two corners in many ways that leave the same velocities, so its
 # impulse error stays near 0.46 for every method while the velocities converge.
 #   gnuplot -e "data='error_vs_iterations.dat'; output='error_vs_cost.png'" error_vs_cost.gp
-set terminal pngcairo size 1500,480 font "sans,10"
+set terminal pngcairo size 1800,480 font "sans,10"
 set output output
 
-scenes = "stack20 pyramid8 pyramid20"
+scenes = "stack20 pyramid8 pyramid20 rain"
 variants = "sequential_cold sequential_warm micro"
 labels = "'sequential, cold start' 'sequential, warm start' 'micro (k impulses per point)'"
 colours = "#1b9e77 #66a61e #d95f02"
