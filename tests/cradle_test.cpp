@@ -19,21 +19,29 @@ constexpr double kStrikeGap = 0.25;   ///< m between the striker and the row
 constexpr int kSteps = 60;            ///< 1 s: the strike lands after 0.125 s
 constexpr double kRadius = 0.5;
 
-/// A striker kStrikeGap short of `balls` touching balls, elastic (e = 1) and frictionless, no
+/// How a cradle is set up: the striker's gap to the row and its speed, the balls' radius.
+struct Strike {
+  double gap = kStrikeGap;
+  double speed = kStrikeSpeed;
+  double radius = kRadius;
+  double dt = kDt;
+};
+
+/// A striker strike.gap short of `balls` touching balls, elastic (e = 1) and frictionless, no
 /// gravity.
-Scene cradle(int balls, const std::string& solver) {
-  Scene scene = lecture::sceneWith(solver, kDt);
+Scene cradle(int balls, const std::string& solver, const Strike& strike = {}) {
+  Scene scene = lecture::sceneWith(solver, strike.dt);
   scene.world.gravity = Vec2::Zero();
   BodyDef ball;
-  ball.shape = makeCircle(kRadius);
+  ball.shape = makeCircle(strike.radius);
   ball.friction = 0.0;
   ball.restitution = 1.0;
-  ball.position = Vec2(-2.0 * kRadius - kStrikeGap, 0.0);
-  ball.velocity = Vec2(kStrikeSpeed, 0.0);
+  ball.position = Vec2(-2.0 * strike.radius - strike.gap, 0.0);
+  ball.velocity = Vec2(strike.speed, 0.0);
   scene.bodies.push_back(ball);
   ball.velocity = Vec2::Zero();
   for (int k = 0; k < balls; ++k) {
-    ball.position = Vec2(2.0 * kRadius * k, 0.0);
+    ball.position = Vec2(2.0 * strike.radius * k, 0.0);
     scene.bodies.push_back(ball);
   }
   return scene;
@@ -83,4 +91,48 @@ TEST_CASE("a collision passes along a row of touching balls to the far ball",
       CHECK(kineticEnergy(*world) <= energyBefore * (1.0 + 1e-12));
     }
   }
+}
+
+// Whether a row's neighbours read as touching is round-off: the penetration phase leaves a
+// resolved pair at zero overlap, and the next step's contact may read it 1.7e-16 m apart. Seven
+// balls of 0.1 m struck from touching at 0.5 m/s did that at the sixth pair: the lecture preset
+// (no speculative gaps) stopped the collision there, and the sixth ball pushed the far one along
+// by penetration moves alone (far ball 0 m/s, the sixth at 0.5). touchingTolerance counts such
+// a pair as touching. Every size, speed, gap and step here passes along, with either preset.
+TEST_CASE("the collision passes along rows of any size, speed, gap and time step",
+          "[restitution][cradle][micro]") {
+  int runs = 0;
+  for (const bool lecturePreset : {false, true}) {
+    for (const double radius : {0.1, 0.5, 2.0}) {
+      for (const double speed : {0.5, 2.0, 5.0}) {
+        for (const double gap : {0.0, 1e-3, 0.05}) {
+          for (const double dt : {1.0 / 30.0, 1.0 / 60.0, 1.0 / 240.0}) {
+            for (int balls = 2; balls <= 10; ++balls) {
+              Scene scene = cradle(balls, "micro", {gap, speed, radius, dt});
+              if (lecturePreset) scene.solverSettings.micro = MicroCollisionSettings::lecture();
+              auto world = buildWorld(scene);
+              const double momentumBefore = momentum(*world);
+              const double energyBefore = kineticEnergy(*world);
+              const int steps = int(std::lround((gap / speed + 0.5) / dt)) + 2;
+              for (int step = 0; step < steps; ++step) world->step();
+              const auto& bodies = world->bodies();
+              double fastestOther = 0.0;
+              for (int k = 0; k + 1 < int(bodies.size()); ++k) {
+                fastestOther = std::max(fastestOther, bodies[k].velocity.norm());
+              }
+              INFO((lecturePreset ? "lecture preset, " : "")
+                   << balls << " balls of radius " << radius << " struck at " << speed
+                   << " m/s from " << gap << " m, dt " << dt);
+              CHECK(bodies.back().velocity.x() >= 0.9 * speed);
+              CHECK(fastestOther < 0.1 * speed);
+              CHECK(std::abs(momentum(*world) - momentumBefore) < 1e-9 * momentumBefore);
+              CHECK(kineticEnergy(*world) <= energyBefore * (1.0 + 1e-12));
+              ++runs;
+            }
+          }
+        }
+      }
+    }
+  }
+  std::cout << "figure: " << runs << " cradles, every one passed along\n";
 }

@@ -40,6 +40,7 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"position_iterations_per_contact", &s.positionIterationsPerContact},
           {"angular_move_limit", &s.angularMoveLimit},
           {"singular_matrix_tolerance", &s.singularMatrixTolerance},
+          {"touching_tolerance", &s.touchingTolerance},
           {"speculative_gaps", &s.speculativeGaps},
           {"impulse_totals", &s.impulseTotals},
           {"severity_counts_pushed_points", &s.severityCountsPushedPoints},

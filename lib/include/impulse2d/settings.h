@@ -73,6 +73,11 @@ struct MicroCollisionSettings {
   double angularMoveLimit = 0.2;
   /// Below this |determinant| the contact matrix counts as singular (frictionless fallback).
   double singularMatrixTolerance = 1e-12;
+  /// m. A point apart by no more than this counts as touching. The penetration phase moves a
+  /// resolved point to zero overlap, which the next step's contact reads give or take round-off
+  /// (1e-16 m): without it, a row of touching balls that reads −1.7e-16 m at one pair stops the
+  /// lecture preset's collision there, and the ball behind pushes its neighbour by moves alone.
+  double touchingTolerance = 1e-9;
 
   // Refinements of ours, beyond the lecture; each is off in lecture() (docs/micro-collisions.md).
 

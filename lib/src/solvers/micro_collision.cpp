@@ -316,13 +316,13 @@ Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state) const 
   return Vec2(normalChange, -tangentPart(state.contactVelocity));
 }
 
-// A point the normal rule applies to: it touches, or (speculative gaps) its gap would close
-// within the step, or (impulse totals) this update already pushes it.
+// A point the normal rule applies to: it touches (to within touchingTolerance), or (speculative
+// gaps) its gap would close within the step, or (impulse totals) this update already pushes it.
 bool MicroCollisionSolver::engaged(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
   const bool gapCloses = settings_.speculativeGaps && separatingVelocity * dt_ < state.penetration;
   const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
-  return state.penetration >= 0.0 || gapCloses || pressed;
+  return state.penetration >= -settings_.touchingTolerance || gapCloses || pressed;
 }
 
 // How badly a point needs resolving. A point not yet pushed in this update counts only its
