@@ -86,10 +86,11 @@ TEST_CASE(
   CHECK(holds("heavy_on_light", "micro", 1000));
   CHECK(holds("heavy_on_light", "micro − pairs", 250));
   CHECK(fails("heavy_on_light", "micro − pairs", 500));
-  // A stack whose light boxes were squeezed out has no deep contact left: the figure is then how
-  // far they went sideways. Without friction nothing holds them under a heavy box.
-  CHECK(holds("heavy_on_light", "micro − friction", 50));
-  CHECK(fails("heavy_on_light", "micro − friction", 1000));
+  // Without friction nothing holds the light boxes under the heavy one but symmetry: resolving a
+  // flat contact's corners together (frictionless pairs too, since 2026-11-26) pushes nothing
+  // sideways, and micro holds to the end of the search; one corner at a time the light boxes
+  // were squeezed out from a ratio of about 115.
+  CHECK(holds("heavy_on_light", "micro − friction", 1000));
   CHECK(fails("heavy_on_light", "soft step + load-scaled stiffness", 1000));
 }
 

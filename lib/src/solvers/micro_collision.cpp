@@ -106,7 +106,8 @@ void MicroCollisionSolver::preparePairs() {
   for (int first = 0; first + 1 < int(states_.size()); ++first) {
     if (otherPoint(first) != first + 1) continue;
     states_[first].pair = states_[first + 1].pair = int(pairs_.size());
-    pairs_.push_back({first, PointPair::Status::NotInverted, Eigen::Matrix3d::Zero()});
+    pairs_.push_back(
+        {first, PointPair::Status::NotInverted, Eigen::Matrix3d::Zero(), Eigen::Matrix2d::Zero()});
   }
 }
 
@@ -116,8 +117,9 @@ void MicroCollisionSolver::preparePairs() {
 // the bodies alike wherever it acts along the face, so the two tangents are one direction.
 // Entry (i, j) is the velocity change along i per unit impulse along j (velocityPerUnitImpulse of
 // contact_math.h summed over both bodies, written on the solver's copies of them). Its inverse
-// turns the wanted velocity changes into impulses. A nearly singular matrix (the points almost at
-// one place) leaves the pair to single points.
+// turns the wanted velocity changes into impulses; its two normal rows and columns alone, those of
+// a frictionless pair. A nearly singular matrix (the points almost at one place) leaves the pair
+// to single points.
 void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
   const PointState& p0 = states_[pair.first];
   const PointState& p1 = states_[pair.first + 1];
@@ -142,6 +144,7 @@ void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
     return;
   }
   pair.inverseContactMatrix = k.inverse();
+  pair.inverseNormalMatrix = k.topLeftCorner<2, 2>().inverse();
   pair.status = PointPair::Status::Inverted;
 }
 
@@ -425,14 +428,15 @@ void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointS
 // than it saves: on a 40-row pyramid, 1.3 times the time over 300 steps), both are to bounce or
 // neither (with pairBounces; without it a bounce passes point by point, as in the cradle), and
 // the new totals push at both points with static friction; otherwise false, and the worst point
-// is resolved alone. A pair that bounces takes each point to its bounce on its closing velocity
-// now, and both count as bounced.
+// is resolved alone. A frictionless pair (friction off, or μ = 0) takes only the normal changes,
+// through the normal rows of the contact matrix. A pair that bounces takes each point to its
+// bounce on its closing velocity now, and both count as bounced.
 bool MicroCollisionSolver::applyPairChange(const StepContext& context, const PointState& worst,
                                            int iteration) {
   PointPair& pair = pairs_[worst.pair];
   const std::array<PointState*, 2> points = {&states_[pair.first], &states_[pair.first + 1]};
   Manifold& manifold = context.manifolds[worst.manifold];
-  if (!settings_.friction || manifold.friction <= 0.0) return false;
+  const bool frictionless = !settings_.friction || manifold.friction <= 0.0;
   const bool bounce = toBounce(*points[0]);
   if (bounce && !settings_.pairBounces) return false;
   std::array<Vec2, 2> desired;
@@ -450,7 +454,10 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
       tangentPart(points[0]->totalImpulse) + tangentPart(points[1]->totalImpulse));
   const Eigen::Vector3d change(normalPart(desired[0]), normalPart(desired[1]),
                                0.5 * (tangentPart(desired[0]) + tangentPart(desired[1])));
-  const Eigen::Vector3d after = before + pair.inverseContactMatrix * change;
+  Eigen::Vector3d after = before + pair.inverseContactMatrix * change;
+  if (frictionless) {
+    after << before.head<2>() + pair.inverseNormalMatrix * change.head<2>(), 0.0;
+  }
   const double normalTotal = after(0) + after(1);
   if (after(0) <= 0.0 || after(1) <= 0.0 || std::abs(after(2)) > manifold.friction * normalTotal) {
     return false;
@@ -461,7 +468,7 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
     const Vec2 total(after(i), after(2) * after(i) / normalTotal);
     impulses[i] = total - point.totalImpulse;
     point.totalImpulse = total;
-    point.friction = FrictionState::Static;
+    point.friction = frictionless ? FrictionState::None : FrictionState::Static;
     point.bounced = point.bounced || bounce;
     ContactPoint& record = manifold.points[point.point];
     record.bounced = point.bounced;

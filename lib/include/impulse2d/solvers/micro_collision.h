@@ -86,6 +86,8 @@ class MicroCollisionSolver : public ContactSolver {
     Status status = Status::NotInverted;
     /// (normal at the first, normal at the second, tangent) velocity changes -> impulses
     Eigen::Matrix3d inverseContactMatrix;
+    /// the same for the two normals alone, for a frictionless pair
+    Eigen::Matrix2d inverseNormalMatrix;
   };
 
   void prepare(const StepContext& context);
