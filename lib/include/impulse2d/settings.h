@@ -100,8 +100,8 @@ struct MicroCollisionSettings {
   /// resolving and the impulse that stops both (both normals and the shared slip, through the
   /// pair's 3×3 contact matrix; frictionless, its two normal rows alone) keeps both inside the
   /// friction cone, is resolved with its other point in one micro-collision, so a box's two
-  /// corners do not rock each other. Otherwise, and
-  /// when a bounce is due (unless both bounce, pairBounces), one point. Off: one point at a time.
+  /// corners do not rock each other. Otherwise, and when a bounce is due (unless both bounce,
+  /// pairBounces), one point. Off: one point at a time.
   bool pairImpulses = true;
   /// Pair bounces: with pair impulses, a two-point manifold whose points both bounce (neither has
   /// yet) bounces as one micro-collision, each point to −c times its closing velocity now, so a
