@@ -409,11 +409,13 @@ TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compa
 
 TEST_CASE("compare stops at a reference solve that fails, naming the panel and the step",
           "[i2d][compare][reference]") {
-  // One Lemke pivot cannot solve the crate's landing.
+  // One Lemke pivot cannot solve the crate's landing, nor can the active set that Lemke's
+  // failure falls back to with no factorization.
   const TemporaryDirectory directory;
   const std::string scene = writeDropScene(directory);
-  const Outcome outcome = i2d("compare " + scene + " --frames " + (directory / "") +
-                              " --panel 'exact: solver.max_pivots=1' --panel 'also: '");
+  const Outcome outcome =
+      i2d("compare " + scene + " --frames " + (directory / "") +
+          " --panel 'exact: solver.max_pivots=1; solver.max_factorizations=0' --panel 'also: '");
   CHECK(outcome.exitCode == 1);
   CHECK(outcome.err.rfind("error: panel 'exact' at step ", 0) == 0);
   CHECK(outcome.err.find("reference solver: Lemke: pivot limit of 1 reached") != std::string::npos);
@@ -458,7 +460,8 @@ TEST_CASE("frame options without --frames, and bad overlays, are usage errors",
 TEST_CASE("a reference solve that fails ends the run with one error line and exit code 1",
           "[i2d][reference]") {
   const Outcome outcome =
-      i2d("run " + kScenes + "stack.toml --solver reference --set solver.max_pivots=3");
+      i2d("run " + kScenes + "stack.toml --solver reference --set solver.max_pivots=3" +
+          " --set solver.max_factorizations=0");
   CHECK(outcome.exitCode == 1);
   CHECK(outcome.err.rfind("error: step 1 (t = 0.0166667 s): reference solver: Lemke: pivot limit "
                           "of 3 reached",
@@ -468,12 +471,13 @@ TEST_CASE("a reference solve that fails ends the run with one error line and exi
 
 TEST_CASE("a reference solve that fails names its step and keeps the rows before it",
           "[i2d][reference][csv]") {
-  // One Lemke pivot cannot solve the crate's landing, so the run stops at that step, as a body
-  // that overflows does.
+  // One Lemke pivot cannot solve the crate's landing, nor can the active set with no
+  // factorization, so the run stops at that step, as a body that overflows does.
   const TemporaryDirectory directory;
   const std::string scene = writeDropScene(directory);
   const std::string csv = directory / "drop.csv";
-  const Outcome outcome = i2d("run " + scene + " --csv " + csv + " --set solver.max_pivots=1");
+  const Outcome outcome = i2d("run " + scene + " --csv " + csv +
+                              " --set solver.max_pivots=1 --set solver.max_factorizations=0");
   CHECK(outcome.exitCode == 1);
   REQUIRE(outcome.err.rfind("error: step ", 0) == 0);
   CHECK(outcome.err.find("reference solver: Lemke: pivot limit of 1 reached") != std::string::npos);

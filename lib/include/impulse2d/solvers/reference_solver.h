@@ -113,8 +113,15 @@ class ReferenceSolver : public ContactSolver {
   std::vector<int> inFeatureIdOrder(const StepContext& context,
                                     const std::vector<int>& island) const;
   LcpSolution solveByLemke(const std::vector<int>& island) const;
+  /// The island by the active set; false, with its reason added to `failure`, if it fails.
+  bool solveIslandByActiveSet(const StepContext& context, const std::vector<int>& island,
+                              KeptFactorization& kept, Eigen::VectorXd& impulses,
+                              std::string& failure);
   ActiveSetAnswer solveByActiveSet(const StepContext& context, const std::vector<int>& island,
-                                   int ordinal);
+                                   KeptFactorization& kept);
+  /// The factorization kept from step to step for the island given to the active set as the
+  /// `ordinal`-th large one of the step.
+  KeptFactorization& keptFactorization(int ordinal);
   Eigen::SparseMatrix<double> islandDelassus(const std::vector<int>& points) const;
   Eigen::VectorXd velocityChange(const std::vector<int>& points,
                                  const Eigen::VectorXd& impulses) const;
