@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,19 +29,25 @@ std::unique_ptr<World> ballWorld(double dt, const MicroCollisionSettings& micro)
   return buildWorld(scene);
 }
 
-/// Heights of the ball's lowest point at the top of each of the first `bounces` rebounds.
-std::vector<double> apexes(double dt, int bounces) {
-  auto world = ballWorld(dt, MicroCollisionSettings{});
+/// Heights of the ball's (body 1's) lowest point at the top of each rebound, up to `bounces` of
+/// them or `seconds` of stepping.
+std::vector<double> ballApexes(World& world, double dt, int bounces, double seconds) {
   std::vector<double> heights;
   double previousVy = 0.0;
-  while (int(heights.size()) < bounces && world->stepCount() * dt < 20.0) {
-    world->step();
-    const Body& ball = world->bodies()[1];
+  while (int(heights.size()) < bounces && world.stepCount() * dt < seconds) {
+    world.step();
+    const Body& ball = world.bodies()[1];
     if (previousVy > 0.0 && ball.velocity.y() <= 0.0)
       heights.push_back(ball.position.y() - kRadius);
     previousVy = ball.velocity.y();
   }
   return heights;
+}
+
+/// Heights of the ball's lowest point at the top of each of the first `bounces` rebounds.
+std::vector<double> apexes(double dt, int bounces) {
+  auto world = ballWorld(dt, MicroCollisionSettings{});
+  return ballApexes(*world, dt, bounces, 20.0);
 }
 
 double largestRatioError(const std::vector<double>& heights) {
@@ -176,16 +183,7 @@ std::vector<double> elasticApexes(const std::string& solver,
   ball.restitution = 1.0;
   scene.bodies.push_back(ball);
   auto world = buildWorld(scene);
-  std::vector<double> heights;
-  double previousVy = 0.0;
-  while (world->stepCount() * dt < 10.0) {
-    world->step();
-    const Body& body = world->bodies()[1];
-    if (previousVy > 0.0 && body.velocity.y() <= 0.0)
-      heights.push_back(body.position.y() - kRadius);
-    previousVy = body.velocity.y();
-  }
-  return heights;
+  return ballApexes(*world, dt, std::numeric_limits<int>::max(), 10.0);
 }
 
 }  // namespace
