@@ -169,21 +169,23 @@ TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-
 
 namespace {
 
-/// Apexes (m, of the lowest point) of an elastic (e = 1), frictionless 0.2 m ball dropped 0.3 m at
-/// 60 Hz, over 10 s.
+constexpr double kElasticDt = 1.0 / 60.0;  ///< s
+constexpr double kElasticDrop = 0.3;       ///< m
+
+/// Apexes (m, of the lowest point) of an elastic (e = 1), frictionless 0.2 m ball dropped
+/// kElasticDrop at 1/kElasticDt Hz, over 10 s.
 std::vector<double> elasticApexes(const std::string& solver,
                                   const std::vector<std::string>& settings) {
-  constexpr double dt = 1.0 / 60.0;
-  Scene scene = lecture::sceneWith(solver, dt);
+  Scene scene = lecture::sceneWith(solver, kElasticDt);
   for (const std::string& setting : settings) applySetting(scene, setting);
   BodyDef ground = lecture::ground(0.0);
   ground.restitution = 1.0;
   scene.bodies.push_back(ground);
-  BodyDef ball = lecture::diskOnSlope(kRadius, 0.0, 0.0, 0.3);
+  BodyDef ball = lecture::diskOnSlope(kRadius, 0.0, 0.0, kElasticDrop);
   ball.restitution = 1.0;
   scene.bodies.push_back(ball);
   auto world = buildWorld(scene);
-  return ballApexes(*world, dt, std::numeric_limits<int>::max(), 10.0);
+  return ballApexes(*world, kElasticDt, std::numeric_limits<int>::max(), 10.0);
 }
 
 }  // namespace
@@ -193,23 +195,28 @@ std::vector<double> elasticApexes(const std::string& solver,
 // landing speed v, so every bounce leaves faster than the ball arrived and rises at least v·dt
 // higher (4 cm here): sequential impulses, the reference and Box2D 2.4.1 all climb from 0.3 m to
 // about 1.08 m in 10 s. Removing the acceleration velocity (the lecture's fix for resting
-// contacts) takes that g·dt out of the bounce too, and micro's ball keeps its height.
+// contacts) takes that g·dt out of the bounce too, and micro's ball keeps its height: to within
+// two steps of gravity's fall, g·dt² each (5.5 mm here), one for the apex sampled at a step
+// rather than at its top, one for the bounce found at a step rather than at the touch (0.297 and
+// 0.300 m are measured).
 TEST_CASE("an elastic ball keeps its height only when the acceleration velocity is removed",
           "[restitution][micro]") {
   const std::vector<double> kept = elasticApexes("micro", {});
   REQUIRE(kept.size() >= 10);
-  for (const double h : kept) CHECK(h == Approx(0.3).epsilon(0.02));
+  const double stepFall = lecture::kGravity * kElasticDt * kElasticDt;
+  for (const double h : kept) CHECK(h == Approx(kElasticDrop).margin(2.0 * stepFall));
   for (const auto& [solver, settings] :
        {std::pair<std::string, std::vector<std::string>>{
             "micro", {"solver.remove_acceleration_velocity=false"}},
         {"sequential", {}}}) {
     const std::vector<double> climbing = elasticApexes(solver, settings);
     REQUIRE(climbing.size() >= 5);
-    double previous = 0.3;
+    double previous = kElasticDrop;
     for (const double h : climbing) {
+      // At least v·dt higher each bounce; half of it allows for the sampling above.
       const double landingSpeed = std::sqrt(2.0 * lecture::kGravity * previous);
       INFO(solver << ": apex " << h << " m after one of " << previous << " m");
-      CHECK(h > previous + 0.5 * landingSpeed / 60.0);
+      CHECK(h > previous + 0.5 * landingSpeed * kElasticDt);
       previous = h;
     }
     std::cout << "figure: elastic ball from 0.3 m at 60 Hz, " << solver

@@ -454,9 +454,11 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
       tangentPart(points[0]->totalImpulse) + tangentPart(points[1]->totalImpulse));
   const Eigen::Vector3d change(normalPart(desired[0]), normalPart(desired[1]),
                                0.5 * (tangentPart(desired[0]) + tangentPart(desired[1])));
-  Eigen::Vector3d after = before + pair.inverseContactMatrix * change;
+  Eigen::Vector3d after;
   if (frictionless) {
     after << before.head<2>() + pair.inverseNormalMatrix * change.head<2>(), 0.0;
+  } else {
+    after = before + pair.inverseContactMatrix * change;
   }
   const double normalTotal = after(0) + after(1);
   if (after(0) <= 0.0 || after(1) <= 0.0 || std::abs(after(2)) > manifold.friction * normalTotal) {

@@ -15,10 +15,10 @@
 // small); a larger one by the active set (active_set.h: sparse factorizations of W on the touching
 // rows, started from last step's states), with Lemke as the fallback while the island is not too
 // big; a small island that Lemke cannot finish goes to the active set in turn. Lemke is tried
-// along several paths (a perturbed q, Harris's ratio test, other covering
-// vectors) until one passes. Every answer is checked against the physical conditions before it
-// is used. The targets carry no penetration bias (the position pass removes overlap): a biased
-// pile can pose a problem with no exact answer (docs/global-reference.md).
+// along several paths (a perturbed q, Harris's ratio test, other covering vectors) until one
+// passes. Every answer is checked against the physical conditions before it is used. The targets
+// carry no penetration bias (the position pass removes overlap): a biased pile can pose a problem
+// with no exact answer (docs/global-reference.md).
 #pragma once
 
 #include <array>
