@@ -6,9 +6,14 @@
 //
 //   sweep OUTDIR            the full sweep (about ten minutes)
 //   sweep --quick OUTDIR    one iteration count and one time step per method, in seconds
+//   sweep --methods micro --scenes pyramid40,rain OUTDIR
+//                           only those methods on those panels (comma-separated lists, either
+//                           may be left out), without the scaling family: a quicker look at a
+//                           few panels; its CSVs are not the charts'
 //
 // Every point plotted is measured; a point whose run would not fit its time budget is written
 // with status "over budget" (or "skipped" when a cheaper point already was) and never plotted.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -52,6 +57,9 @@ const std::vector<Panel> kPanels = {
      [](const RunFigures& f) { return f.largestPenetration; }, false},
 };
 
+const std::vector<std::string> kMethods = {"micro", "sequential", "reference", "soft_step",
+                                           "box2d"};
+
 struct Grid {
   std::vector<std::string> solvers;
   std::vector<int> iterations;
@@ -60,19 +68,83 @@ struct Grid {
   double pointBudget;
 };
 
-Grid sweepGrid(bool quick) {
-  if (quick) return {{"micro", "sequential", "reference", "soft_step", "box2d"}, {8}, {60}, 5.0};
-  return {{"micro", "sequential", "reference", "soft_step", "box2d"},
-          {1, 2, 4, 8, 16, 32, 64},
-          {30, 60, 120, 240},
-          10.0};
+Grid sweepGrid(bool quick, const std::vector<std::string>& methods) {
+  if (quick) return {methods, {8}, {60}, 5.0};
+  return {methods, {1, 2, 4, 8, 16, 32, 64}, {30, 60, 120, 240}, 10.0};
+}
+
+/// What the command line asks for: the methods and panels to run (all by default).
+struct Options {
+  bool quick = false;
+  std::vector<std::string> methods = kMethods;
+  std::vector<std::string> scenes;  ///< empty: every panel
+  bool chosen = false;              ///< --methods or --scenes given: no scaling family
+  std::string outputDirectory;
+};
+
+std::vector<std::string> splitList(const std::string& list) {
+  std::vector<std::string> items;
+  std::string::size_type start = 0;
+  for (;;) {
+    const std::string::size_type comma = list.find(',', start);
+    items.push_back(list.substr(start, comma - start));
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
+  }
+}
+
+/// The items of `list` that are not among `known`, joined for an error message.
+std::string unknownItems(const std::vector<std::string>& list,
+                         const std::vector<std::string>& known) {
+  std::string unknown;
+  for (const std::string& item : list) {
+    if (std::find(known.begin(), known.end(), item) != known.end()) continue;
+    unknown += (unknown.empty() ? "'" : ", '") + item + "'";
+  }
+  return unknown;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+/// Reads the options before OUTDIR; returns what is wrong with them, or an empty string.
+std::string parseOptions(int argc, char** argv, Options& options) {
+  if (argc < 2) return "OUTDIR is missing";
+  std::vector<std::string> panelScenes;
+  for (const Panel& panel : kPanels) panelScenes.push_back(panel.scene);
+  for (int i = 1; i < argc - 1; ++i) {
+    const std::string option = argv[i];
+    if (option == "--quick") {
+      options.quick = true;
+      continue;
+    }
+    if (option != "--methods" && option != "--scenes") return "unknown option '" + option + "'";
+    if (i + 1 >= argc - 1) return option + " needs a comma-separated list before OUTDIR";
+    const std::vector<std::string> list = splitList(argv[++i]);
+    const std::vector<std::string>& known = option == "--methods" ? kMethods : panelScenes;
+    const std::string unknown = unknownItems(list, known);
+    if (!unknown.empty())
+      return option + ": unknown " + unknown + " (choose from " + joined(known) + ")";
+    (option == "--methods" ? options.methods : options.scenes) = list;
+    options.chosen = true;
+  }
+  options.outputDirectory = argv[argc - 1];
+  const std::string problem = outputDirectoryProblem(options.outputDirectory);
+  return problem.empty() ? "" : "OUTDIR " + problem;
 }
 
 /// The points of the sweep in the order they run: cheap ones first within each method, so a
 /// point over budget lets the dearer ones behind it be skipped.
-std::vector<SweepPoint> sweepPoints(const Grid& grid) {
+std::vector<SweepPoint> sweepPoints(const Grid& grid, const std::vector<std::string>& scenes) {
   std::vector<SweepPoint> points;
   for (size_t panel = 0; panel < kPanels.size(); ++panel) {
+    if (!scenes.empty() &&
+        std::find(scenes.begin(), scenes.end(), kPanels[panel].scene) == scenes.end()) {
+      continue;
+    }
     for (const std::string& solver : grid.solvers) {
       const bool reference = solver == "reference";
       if (reference && !kPanels[panel].referenceAffordable) continue;
@@ -155,23 +227,22 @@ void runSweep(std::vector<SweepPoint>& points, double budget, ProgressBar& progr
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc == 3 && std::string(argv[1]) == "--quick";
-  if (argc != 2 && !quick) {
-    std::fprintf(stderr, "usage: sweep [--quick] OUTDIR\n");
-    return 2;
-  }
-  const std::string outputDirectory = argv[argc - 1];
-  const std::string problem = outputDirectoryProblem(outputDirectory);
+  Options options;
+  const std::string problem = parseOptions(argc, argv, options);
   if (!problem.empty()) {
-    std::fprintf(stderr, "sweep: error: OUTDIR %s\nusage: sweep [--quick] OUTDIR\n",
+    std::fprintf(stderr,
+                 "sweep: error: %s\nusage: sweep [--quick] [--methods LIST] [--scenes LIST] "
+                 "OUTDIR\n",
                  problem.c_str());
     return 2;
   }
+  const std::string& outputDirectory = options.outputDirectory;
   const auto start = std::chrono::steady_clock::now();
-  const Grid grid = sweepGrid(quick);
-  std::vector<SweepPoint> points = sweepPoints(grid);
-  const std::vector<int> rows = quick ? std::vector<int>{4, 9, 14} : scalingFamilyRows();
-  std::vector<ScalingPoint> scaling = scalingPoints(rows);
+  const Grid grid = sweepGrid(options.quick, options.methods);
+  std::vector<SweepPoint> points = sweepPoints(grid, options.scenes);
+  const std::vector<int> rows = options.quick ? std::vector<int>{4, 9, 14} : scalingFamilyRows();
+  std::vector<ScalingPoint> scaling;
+  if (!options.chosen) scaling = scalingPoints(rows);
   ProgressBar progress(points.size() + scaling.size());
   runSweep(points, grid.pointBudget, progress);
   measureScaling(scaling, progress);
@@ -187,6 +258,6 @@ int main(int argc, char** argv) {
   const double minutes =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.0;
   printSweepTables(points, minutes);
-  printScalingTable(scaling);
+  if (!scaling.empty()) printScalingTable(scaling);
   return 0;
 }

@@ -52,3 +52,20 @@ TEST_CASE("a benchmark refuses an output directory that does not exist", "[bench
   CHECK(outcome.err.find("'/nonexistent/charts' is not an existing directory") !=
         std::string::npos);
 }
+
+TEST_CASE("the sweep refuses a method or a panel it does not have, naming it", "[benchmarks]") {
+  const Outcome method = runBenchmark("sweep", "--methods micro,bullet /tmp");
+  INFO(method.err);
+  CHECK(method.exitCode == 2);
+  CHECK(method.err.find("--methods: unknown 'bullet'") != std::string::npos);
+  const Outcome scene = runBenchmark("sweep", "--scenes rain,stack /tmp");
+  INFO(scene.err);
+  CHECK(scene.exitCode == 2);
+  CHECK(scene.err.find("--scenes: unknown 'stack' (choose from stack20, pyramid20, pyramid40, "
+                       "rain)") != std::string::npos);
+  const Outcome missing = runBenchmark("sweep", "--methods /tmp");
+  INFO(missing.err);
+  CHECK(missing.exitCode == 2);
+  CHECK(missing.err.find("--methods needs a comma-separated list before OUTDIR") !=
+        std::string::npos);
+}
