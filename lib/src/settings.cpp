@@ -144,6 +144,7 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"warm_starting", &s.warmStarting},
           {"speculative_contacts", &s.speculativeContacts},
           {"contact_recycling", &s.contactRecycling},
+          {"round_surfaces", &s.roundSurfaces},
           {"recycle_distance", &s.recycleDistance},
           {"recycle_largest_turn", &s.recycleLargestTurn},
           {"restitution", &s.restitution},

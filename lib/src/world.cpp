@@ -158,7 +158,8 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
 // recycle distance in A's frame (plus what the pair's relative turn moves a point at the
 // farther-reaching dynamic body's largest extent), the manifold is kept with its normal, ids,
 // impulses and arms as found; only each point's overlap follows how far the bodies moved since,
-// the arms turned with them, as a soft step's substeps measure it.
+// the arms turned with them (a circle's not, with roundSurfaces), as a soft step's substeps
+// measure it.
 bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
   const ContactRecycling limits = solver_->contactRecycling();
   if (limits.distance <= 0.0 || old.pointCount == 0) return false;
@@ -173,8 +174,12 @@ bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
                        reach * std::abs(std::sin(turnB - turnA));
   if (moved >= limits.distance) return false;
   manifold = old;
-  const Mat2 turnOfA = rotation(turnA);
-  const Mat2 turnOfB = rotation(turnB);
+  const auto turnOf = [&limits](const Body& body, double turn) {
+    return limits.roundSurfaces && body.shape.type == ShapeType::Circle ? rotation(0.0)
+                                                                        : rotation(turn);
+  };
+  const Mat2 turnOfA = turnOf(a, turnA);
+  const Mat2 turnOfB = turnOf(b, turnB);
   for (int i = 0; i < manifold.pointCount; ++i) {
     ContactPoint& point = manifold.points[size_t(i)];
     const Vec2 onA = a.position + turnOfA * point.foundArmA;

@@ -67,6 +67,8 @@ struct SolveReport {
 struct ContactRecycling {
   double distance = 0.0;     ///< m; 0: every manifold is found anew each substep
   double largestTurn = 0.0;  ///< rad
+  /// A circle's overlap follows its centre alone, its arm not turned (SoftStepSettings).
+  bool roundSurfaces = false;
 };
 
 class ContactSolver {

@@ -34,7 +34,7 @@ Softness loadedSoftness(double hertz, double dampingRatio, double h, double load
 
 ContactRecycling SoftStepSolver::contactRecycling() const {
   if (!settings_.contactRecycling) return {};
-  return {settings_.recycleDistance, settings_.recycleLargestTurn};
+  return {settings_.recycleDistance, settings_.recycleLargestTurn, settings_.roundSurfaces};
 }
 
 void SoftStepSolver::solveVelocities(const StepContext& context) {
@@ -97,6 +97,8 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     constraint.pointCount = manifold.pointCount;
     const Body& bodyA = context.bodies[size_t(manifold.bodyA)];
     const Body& bodyB = context.bodies[size_t(manifold.bodyB)];
+    constraint.turnArmA = !(settings_.roundSurfaces && bodyA.shape.type == ShapeType::Circle);
+    constraint.turnArmB = !(settings_.roundSurfaces && bodyB.shape.type == ShapeType::Circle);
     const double pairHertz =
         bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
     const SolverBody& a = bodies_[size_t(manifold.bodyA)];
@@ -195,7 +197,8 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
   return largestChange;
 }
 
-// The separation now is the base plus how far the anchors moved along the (fixed) normal. A gap
+// The separation now is the base plus how far the anchors moved along the (fixed) normal, a
+// circle's with its centre alone (roundSurfaces), every other turned with its body. A gap
 // (s > 0) may close within the substep and no further; an overlap is pushed out at the soft bias
 // rate, never faster than maxPushVelocity.
 void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b,
@@ -205,8 +208,9 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverB
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[size_t(i)];
     const Softness& soft = cp.softness;
-    const Vec2 anchorsMoved =
-        moved + rotate(b.deltaCos, b.deltaSin, cp.armB) - rotate(a.deltaCos, a.deltaSin, cp.armA);
+    const Vec2 armA = constraint.turnArmA ? rotate(a.deltaCos, a.deltaSin, cp.armA) : cp.armA;
+    const Vec2 armB = constraint.turnArmB ? rotate(b.deltaCos, b.deltaSin, cp.armB) : cp.armB;
+    const Vec2 anchorsMoved = moved + armB - armA;
     const double separation = cp.baseSeparation + anchorsMoved.dot(normal);
     double bias = 0.0;
     double massScale = 1.0;

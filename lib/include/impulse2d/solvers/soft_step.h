@@ -90,6 +90,9 @@ class SoftStepSolver : public ContactSolver {
     double friction = 0.0;
     double restitution = 0.0;
     int pointCount = 0;
+    /// The arms that turn with their bodies within the step: not a circle's (roundSurfaces).
+    bool turnArmA = true;
+    bool turnArmB = true;
     std::array<ConstraintPoint, 2> points;
   };
 
