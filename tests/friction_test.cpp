@@ -152,6 +152,31 @@ TEST_CASE("soft step: a small disc turning fast rolls at (2/3) g sin θ with rou
   }
 }
 
+// Friction turns spin into rolling: a disc spinning in place on the ground slips, friction μmg
+// speeds it up and slows its spin until v = ω r, after which nothing changes. Angular momentum
+// about the contact point is kept through the slip (the friction force passes through it):
+// I ω₀ = I ω + m v r with v = ω r gives v = ω₀ r / 3 for a disc (I = ½ m r²).
+TEST_CASE("a disc spinning in place rolls off at ω₀ r / 3", "[friction][rolling]") {
+  const double spin = 20.0;  // rad/s, clockwise: it rolls to the right
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double radius : {0.1, 0.5}) {
+      Scene scene = lecture::sceneWith(solver, kDt);
+      scene.bodies.push_back(lecture::ground(0.3));
+      BodyDef disc = lecture::diskOnSlope(radius, 0.0, 0.3);
+      disc.angularVelocity = -spin;
+      scene.bodies.push_back(disc);
+      auto world = buildWorld(scene);
+      for (int step = 0; step < 240; ++step) world->step();  // slips until ω₀ r / (3 μ g) ≤ 1.2 s
+      const Body& end = world->bodies()[1];
+      const double expected = spin * radius / 3.0;
+      INFO(solver << ", radius " << radius << ": v = " << end.velocity.x() << " m/s, ω r = "
+                  << -end.angularVelocity * radius << " m/s, analytic " << expected);
+      CHECK(end.velocity.x() == Approx(expected).epsilon(0.01));
+      CHECK(std::abs(end.velocity.x() + end.angularVelocity * radius) < 0.01 * expected);
+    }
+  }
+}
+
 // After a landing every method carries the landing's impulses into the next steps (warm
 // starting); the slip must still be resolved in each of them. Micro once kept a landed disk's
 // friction total step after step, its normal need met by the carried total and its slip never

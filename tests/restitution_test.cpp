@@ -225,3 +225,44 @@ TEST_CASE("an elastic ball keeps its height only when the acceleration velocity 
               << " bounces (micro: " << kept.back() << " m)\n";
   }
 }
+
+// Newton's law of restitution at one contact, with momentum kept: two discs of masses m₁, m₂
+// closing head-on at v₁ − v₂ leave at −e(v₁ − v₂), so
+//   v₁' = ((m₁ − e m₂) v₁ + (1 + e) m₂ v₂) / (m₁ + m₂),   v₂' likewise with 1 and 2 swapped.
+TEST_CASE("two discs colliding head-on leave at Newton's velocities, momentum kept",
+          "[restitution][collision]") {
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double restitution : {0.0, 0.5, 1.0}) {
+      for (const double massRatio : {1.0, 3.0, 20.0}) {
+        Scene scene = lecture::sceneWith(solver, 1.0 / 60.0);
+        scene.world.gravity = Vec2::Zero();
+        BodyDef small;
+        small.shape = makeCircle(0.3);
+        small.density = massRatio;
+        small.position = Vec2(-1.0, 0.0);
+        small.velocity = Vec2(8.0, 0.0);
+        small.restitution = restitution;
+        BodyDef large = small;
+        large.shape = makeCircle(0.5);
+        large.density = 1.0;
+        large.position = Vec2(1.0, 0.0);
+        large.velocity = Vec2(-4.0, 0.0);
+        scene.bodies = {small, large};
+        auto world = buildWorld(scene);
+        const double m1 = world->bodies()[0].mass;
+        const double m2 = world->bodies()[1].mass;
+        for (int step = 0; step < 60; ++step) world->step();  // they meet within 0.1 s
+        const double v1 = world->bodies()[0].velocity.x();
+        const double v2 = world->bodies()[1].velocity.x();
+        const double e = restitution;
+        const double expected1 = ((m1 - e * m2) * 8.0 + (1 + e) * m2 * -4.0) / (m1 + m2);
+        const double expected2 = ((m2 - e * m1) * -4.0 + (1 + e) * m1 * 8.0) / (m1 + m2);
+        INFO(solver << ", e " << e << ", mass ratio " << m1 / m2 << ": v1 " << v1 << " ("
+                    << expected1 << "), v2 " << v2 << " (" << expected2 << ")");
+        CHECK(std::abs(v1 - expected1) < 0.01 * 12.0);  // 1 % of the closing speed
+        CHECK(std::abs(v2 - expected2) < 0.01 * 12.0);
+        CHECK(std::abs(m1 * v1 + m2 * v2 - (m1 * 8.0 - m2 * 4.0)) < 1e-9 * (m1 * 8.0 + m2 * 4.0));
+      }
+    }
+  }
+}
