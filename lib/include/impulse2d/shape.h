@@ -52,6 +52,12 @@ CentredPolygon makePolygon(const std::vector<Vec2>& vertices);
 /// Mass and moment of inertia of the shape at the given density (kg/m^2).
 MassProperties computeMass(const Shape& shape, double density);
 
+/// Whether the surface under a contact changes as the shape turns about its centre: not a
+/// circle's, which is the same however it turns (a contact on it moves with its centre alone).
+inline bool surfaceTurnsWithShape(const Shape& shape) {
+  return shape.type != ShapeType::Circle;
+}
+
 /// m. The largest distance of a point of the shape from its centre of mass (its body origin).
 double maxExtent(const Shape& shape);
 

@@ -97,8 +97,8 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     constraint.pointCount = manifold.pointCount;
     const Body& bodyA = context.bodies[size_t(manifold.bodyA)];
     const Body& bodyB = context.bodies[size_t(manifold.bodyB)];
-    constraint.turnArmA = !(settings_.roundSurfaces && bodyA.shape.type == ShapeType::Circle);
-    constraint.turnArmB = !(settings_.roundSurfaces && bodyB.shape.type == ShapeType::Circle);
+    constraint.turnArmA = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyA.shape);
+    constraint.turnArmB = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyB.shape);
     const double pairHertz =
         bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
     const SolverBody& a = bodies_[size_t(manifold.bodyA)];
