@@ -206,3 +206,82 @@ TEST_CASE("a disk that lands on a slope rolls, or slips, at the analytic acceler
     }
   }
 }
+
+// Friction opposes the slip, whichever way it goes. A box sent up a slope slides against gravity
+// and friction together, a = −g(sin θ + μ cos θ); once it stops, static friction holds it if
+// μ > tan θ, or it slides back down with friction now pointing up the slope, a = g(sin θ − μ cos
+// θ).
+TEST_CASE("a box sent up a slope decelerates at g(sin θ + μ cos θ), then holds or slides back",
+          "[friction][dynamic][static]") {
+  const double launch = 3.0;  // m/s up the slope
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double degreesOfSlope : {15.0, 25.0}) {
+      const double angle = degrees(degreesOfSlope);
+      for (const double friction : {0.3, 0.6}) {  // below tan 25° = 0.47, above it
+        Scene scene = lecture::sceneWith(solver, kDt);
+        scene.bodies.push_back(lecture::ground(friction, angle));
+        BodyDef box = lecture::boxOnSlope(Vec2(1.0, 1.0), angle, friction);
+        const Vec2 down = lecture::downSlope(angle);
+        box.velocity = -launch * down;
+        scene.bodies.push_back(box);
+        auto world = buildWorld(scene);
+        std::vector<double> speedDown;  // after each step, m/s down the slope
+        std::vector<double> distanceDown;
+        for (int step = 0; step < 180; ++step) {
+          world->step();
+          speedDown.push_back(world->bodies()[1].velocity.dot(down));
+          distanceDown.push_back(world->bodies()[1].position.dot(down));
+        }
+        const double g = lecture::kGravity;
+        const double climbing = g * (std::sin(angle) + friction * std::cos(angle));
+        const double aUp = (speedDown[10] - speedDown[2]) / (8 * kDt);  // stops after 0.3 s
+        INFO(solver << ", " << degreesOfSlope << " deg, mu " << friction << ": climbing a = " << aUp
+                    << " m/s^2, analytic " << climbing);
+        CHECK(aUp == Approx(climbing).epsilon(0.01));
+        if (friction > std::tan(angle)) {
+          INFO("after stopping it moved " << distanceDown[179] - distanceDown[59] << " m in 2 s");
+          CHECK(std::abs(distanceDown[179] - distanceDown[59]) < 1e-3);
+        } else {
+          const double back = g * (std::sin(angle) - friction * std::cos(angle));
+          const double aDown = (speedDown[179] - speedDown[119]) / (60 * kDt);
+          INFO("sliding back a = " << aDown << " m/s^2, analytic " << back);
+          CHECK(aDown == Approx(back).epsilon(0.01));
+        }
+      }
+    }
+  }
+}
+
+// A disc thrown along the ground without spin slides; friction μmg slows it and spins it up until
+// v = ω r. Angular momentum about the contact line is kept (friction acts on it), so
+// m v₀ r = m v r + ½ m r² (v / r): v = (2/3) v₀, reached after v₀ / (3 μ g).
+TEST_CASE("a disc thrown sliding rolls off at (2/3) v₀ after v₀ / (3 μ g)", "[friction][rolling]") {
+  const double thrown = 4.0;  // m/s
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double radius : {0.1, 0.5}) {
+      for (const double friction : {0.2, 0.6}) {
+        Scene scene = lecture::sceneWith(solver, kDt);
+        scene.bodies.push_back(lecture::ground(friction));
+        BodyDef disc = lecture::diskOnSlope(radius, 0.0, friction);
+        disc.position.x() = -15.0;
+        disc.velocity = Vec2(thrown, 0.0);
+        scene.bodies.push_back(disc);
+        auto world = buildWorld(scene);
+        const double slipTime = thrown / (3.0 * friction * lecture::kGravity);
+        double rollingFrom = -1.0;  // s: the first step that ends with the slip under 1 mm/s
+        for (int step = 1; step * kDt < slipTime + 1.0; ++step) {
+          world->step();
+          const Body& disc = world->bodies()[1];
+          const double slip = disc.velocity.x() + disc.angularVelocity * radius;
+          if (rollingFrom < 0.0 && std::abs(slip) < 1e-3) rollingFrom = step * kDt;
+        }
+        const double speed = world->bodies()[1].velocity.x();
+        INFO(solver << ", radius " << radius << ", mu " << friction << ": v = " << speed
+                    << " m/s (analytic " << 2.0 / 3.0 * thrown << "), rolling from " << rollingFrom
+                    << " s (analytic " << slipTime << ")");
+        CHECK(speed == Approx(2.0 / 3.0 * thrown).epsilon(0.005));
+        CHECK(std::abs(rollingFrom - slipTime) < 0.02 * slipTime + kDt);
+      }
+    }
+  }
+}

@@ -72,9 +72,9 @@ TEST_CASE(
     "what it shows",
     "[scenes][shipped]") {
   std::set<std::string> expected = {
-      "resting_box",    "pushed_box",       "jitter",       "bouncing_ball", "incline_holds",
-      "incline_slides", "incline_friction", "rolling_disk", "spinning_disk", "stack",
-      "pyramid",        "cradle",           "soft_step",    "heavy_on_light"};
+      "resting_box",    "pushed_box",       "jitter",       "bouncing_ball",  "incline_holds",
+      "incline_slides", "incline_friction", "rolling_disk", "spinning_disk",  "stack",
+      "pyramid",        "cradle",           "soft_step",    "heavy_on_light", "tipping"};
   expected.insert(kBenchmarkScenes.begin(), kBenchmarkScenes.end());
   std::set<std::string> found;
   for (const auto& entry :
@@ -177,6 +177,23 @@ TEST_CASE("incline_slides: the box accelerates at g(sinθ − μcosθ)", "[scene
   const double g = -scene.world.gravity.y();
   const double expected = g * (std::sin(angle) - mu * std::cos(angle));
   CHECK(slopeAcceleration("incline_slides", "box") == Approx(expected).epsilon(0.03));
+}
+
+TEST_CASE("tipping: below tan θ = w/h the box stands, above it the box falls on its side",
+          "[scenes][tipping]") {
+  const Scene scene = shippedScene("tipping");
+  const BodyDef& box = definitionNamed(scene, "stands");
+  const Vec2 corner = box.shape.vertices.front().cwiseAbs();  // a box: (w/2, h/2)
+  const double tippingAngle = std::atan(corner.x() / corner.y());
+  REQUIRE(definitionNamed(scene, "ramp12").angle < tippingAngle);
+  REQUIRE(definitionNamed(scene, "ramp16").angle > tippingAngle);
+  auto world = buildWorld(scene);
+  const Vec2 start = bodyNamed(*world, "stands").position;
+  runToEnd(*world, scene);
+  CHECK((bodyNamed(*world, "stands").position - start).norm() < 1e-3);
+  CHECK(bodyNamed(*world, "stands").angle == Approx(definitionNamed(scene, "ramp12").angle));
+  const double turned = bodyNamed(*world, "tips").angle - definitionNamed(scene, "ramp16").angle;
+  CHECK(std::abs(turned) == Approx(std::acos(-1.0) / 2.0).margin(0.01));
 }
 
 TEST_CASE("rolling_disk: the disk rolls without slipping at (2/3) g sinθ",
