@@ -285,3 +285,43 @@ TEST_CASE("a disc thrown sliding rolls off at (2/3) v₀ after v₀ / (3 μ g)",
     }
   }
 }
+
+// Friction between two moving bodies: a box pushed along frictionless ground carries the box on
+// it while the pair's acceleration F / 2m needs less than static friction can give the top box
+// (μ g), and slides from under it beyond that: the top box then gets μ g, the bottom one
+// (F − μ m g) / m. Both boxes 1 kg, μ 0.5 between them, so the limit is F = 2 μ m g = 9.81 N.
+TEST_CASE("a pushed box carries the box on it below F = 2 μ m g and slides from under it above",
+          "[friction][static][dynamic]") {
+  const double friction = 0.5;
+  const double g = lecture::kGravity;
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double push : {4.0, 15.0}) {  // N
+      Scene scene = lecture::sceneWith(solver, kDt);
+      scene.bodies.push_back(lecture::ground(0.0));  // frictionless: μ mixes as √(μA μB)
+      BodyDef bottom = lecture::boxOnSlope(Vec2(1.0, 1.0), 0.0, friction);
+      bottom.load.force = Vec2(push, 0.0);
+      BodyDef top = lecture::boxOnSlope(Vec2(1.0, 1.0), 0.0, friction, 1.0);
+      top.position.y() = 1.5;  // exactly on the bottom box
+      scene.bodies.push_back(bottom);
+      scene.bodies.push_back(top);
+      auto world = buildWorld(scene);
+      // The top box slides off after √(2 · 0.5 m / 5.2 m/s²) = 0.44 s: measure over 0.05–0.3 s.
+      Vec2 speedsAt3 = Vec2::Zero();  // (bottom, top) m/s after step 3
+      Vec2 speeds = Vec2::Zero();
+      for (int step = 1; step <= 18; ++step) {
+        world->step();
+        speeds = Vec2(world->bodies()[1].velocity.x(), world->bodies()[2].velocity.x());
+        if (step == 3) speedsAt3 = speeds;
+      }
+      const Vec2 accelerations = (speeds - speedsAt3) / (15 * kDt);
+      const bool carried = push / 2.0 < friction * g;
+      const Vec2 expected =
+          carried ? Vec2(push / 2.0, push / 2.0) : Vec2(push - friction * g, friction * g);
+      INFO(solver << ", push " << push << " N: bottom a = " << accelerations.x()
+                  << ", top a = " << accelerations.y() << " m/s^2; analytic " << expected.x()
+                  << ", " << expected.y());
+      CHECK(accelerations.x() == Approx(expected.x()).epsilon(0.005));
+      CHECK(accelerations.y() == Approx(expected.y()).epsilon(0.005));
+    }
+  }
+}
