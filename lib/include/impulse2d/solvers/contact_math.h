@@ -107,9 +107,10 @@ void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, in
 
 // ---- where a contact is now ----
 
-/// The manifold's point midway between the two surface anchors at the bodies' current poses.
+/// Where the manifold's point's impulses act (impulsePoint) at the bodies' current poses.
 inline Vec2 currentContactPoint(const Body& a, const Body& b, const ContactPoint& point) {
-  return 0.5 * (a.toWorld(point.anchorA) + b.toWorld(point.anchorB));
+  return impulsePoint(a.toWorld(point.anchorA), b.toWorld(point.anchorB), a.isStatic(),
+                      b.isStatic());
 }
 
 /// The penetration of a manifold's point at the bodies' current poses: the anchor on A minus the
