@@ -148,7 +148,9 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"recycle_distance", &s.recycleDistance},
           {"recycle_largest_turn", &s.recycleLargestTurn},
           {"restitution", &s.restitution},
-          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}};
+          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
+          {"pair_restitution", &s.pairRestitution.enabled},
+          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit}};
 }
 
 }  // namespace impulse2d

@@ -3,9 +3,11 @@
 #include "impulse2d/solvers/soft_step.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/two_point_block.h"
 
 namespace impulse2d {
 namespace {
@@ -263,19 +265,25 @@ void SoftStepSolver::integratePositions(double h) {
   }
 }
 
-// A contact that was closing faster than the threshold before the step, and was touched in it,
-// is made to separate at −e times that closing speed.
+// Whether a point bounces: it was closing faster than the threshold before the step and was
+// touched in it.
+bool SoftStepSolver::bounces(const ConstraintPoint& cp) const {
+  return cp.relativeVelocity <= -settings_.restitutionVelocityThreshold &&
+         cp.totalNormalImpulse != 0.0;
+}
+
+// A contact that bounces is made to separate at −e times its closing speed before the step: a
+// two-point manifold whose points both bounce as one block (pairRestitution), otherwise point by
+// point as Box2D v3 does.
 void SoftStepSolver::applyRestitution() {
   for (Constraint& constraint : constraints_) {
     if (constraint.restitution == 0.0) continue;
     SolverBody& a = bodies_[size_t(constraint.bodyA)];
     SolverBody& b = bodies_[size_t(constraint.bodyB)];
+    if (applyPairRestitution(constraint, a, b)) continue;
     for (int i = 0; i < constraint.pointCount; ++i) {
       ConstraintPoint& cp = constraint.points[size_t(i)];
-      if (cp.relativeVelocity > -settings_.restitutionVelocityThreshold ||
-          cp.totalNormalImpulse == 0.0) {
-        continue;
-      }
+      if (!bounces(cp)) continue;
       const double vn =
           (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(constraint.normal);
       const double impulse = -cp.normalMass * (vn + constraint.restitution * cp.relativeVelocity);
@@ -286,6 +294,45 @@ void SoftStepSolver::applyRestitution() {
       applyPairImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
     }
   }
+}
+
+// Both points of a two-point manifold that both bounce: the accumulated normal impulses x ≥ 0 that
+// leave each point separating at −e times its closing speed before the step, or pushing nothing,
+// found together (w = K (x − x₀) + vn − target ≥ 0, x·w = 0). False when the pair is not solved
+// as one: the switch is off, a point does not bounce, or K is too ill-conditioned.
+bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
+                                          SolverBody& b) const {
+  if (!settings_.pairRestitution.enabled || constraint.pointCount != 2) return false;
+  ConstraintPoint& p0 = constraint.points[0];
+  ConstraintPoint& p1 = constraint.points[1];
+  if (!bounces(p0) || !bounces(p1)) return false;
+  const Vec2& n = constraint.normal;
+  const std::array<double, 2> turnA = {cross(p0.armA, n), cross(p1.armA, n)};
+  const std::array<double, 2> turnB = {cross(p0.armB, n), cross(p1.armB, n)};
+  Mat2 k;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      k(i, j) = a.inverseMass + b.inverseMass + a.inverseInertia * turnA[i] * turnA[j] +
+                b.inverseInertia * turnB[i] * turnB[j];
+    }
+  }
+  if (!isWellConditioned(k, settings_.pairRestitution.conditionLimit)) return false;
+  const Vec2 before(p0.normalImpulse, p1.normalImpulse);
+  Vec2 missing;  // vn − target at each point now
+  for (int i = 0; i < 2; ++i) {
+    const ConstraintPoint& cp = constraint.points[size_t(i)];
+    const double vn = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(n);
+    missing(i) = vn + constraint.restitution * cp.relativeVelocity;
+  }
+  const Vec2 after = solveTwoPointLcp(k, Vec2(missing - k * before));
+  for (int i = 0; i < 2; ++i) {
+    ConstraintPoint& cp = constraint.points[size_t(i)];
+    const double change = after(i) - before(i);
+    cp.normalImpulse = after(i);
+    cp.totalNormalImpulse += change;
+    applyPairImpulse(a, b, cp.armA, cp.armB, change * n);
+  }
+  return true;
 }
 
 // The manifold keeps the impulse over the whole step (the last substep's times the substeps),

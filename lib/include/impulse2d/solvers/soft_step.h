@@ -107,6 +107,8 @@ class SoftStepSolver : public ContactSolver {
   void solveFriction(Constraint& constraint, SolverBody& a, SolverBody& b) const;
   void integratePositions(double h);
   void applyRestitution();
+  bool bounces(const ConstraintPoint& cp) const;
+  bool applyPairRestitution(Constraint& constraint, SolverBody& a, SolverBody& b) const;
   void storeImpulses(const StepContext& context) const;
   void finishBodies(const StepContext& context, double h) const;
 
