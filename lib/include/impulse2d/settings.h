@@ -98,10 +98,11 @@ struct MicroCollisionSettings {
   bool warmStart = true;
   /// Pair impulses: the worst point of a two-point manifold, when both its points touch and need
   /// resolving and the impulse that stops both (both normals and the shared slip, through the
-  /// pair's 3×3 contact matrix; frictionless, its two normal rows alone) keeps both inside the
-  /// friction cone, is resolved with its other point in one micro-collision, so a box's two
-  /// corners do not rock each other. Otherwise, and when a bounce is due (unless both bounce,
-  /// pairBounces), one point. Off: one point at a time.
+  /// pair's 3×3 contact matrix; frictionless, its two normal rows alone) pushes at both points,
+  /// is resolved with its other point in one micro-collision, so a box's two corners do not rock
+  /// each other. Beyond the friction cone the pair slides: its tangent total is μ times its
+  /// normal total, against the slip, and both normal targets still hold. Otherwise, and when a
+  /// bounce is due (unless both bounce, pairBounces), one point. Off: one point at a time.
   bool pairImpulses = true;
   /// Pair bounces: with pair impulses, a two-point manifold whose points both bounce (neither has
   /// yet) bounces as one micro-collision, each point to −c times its closing velocity now, so a

@@ -106,8 +106,8 @@ void MicroCollisionSolver::preparePairs() {
   for (int first = 0; first + 1 < int(states_.size()); ++first) {
     if (otherPoint(first) != first + 1) continue;
     states_[first].pair = states_[first + 1].pair = int(pairs_.size());
-    pairs_.push_back(
-        {first, PointPair::Status::NotInverted, Eigen::Matrix3d::Zero(), Eigen::Matrix2d::Zero()});
+    pairs_.push_back({first, PointPair::Status::NotInverted, Eigen::Matrix3d::Zero(),
+                      Eigen::Matrix3d::Zero(), Eigen::Matrix2d::Zero()});
   }
 }
 
@@ -143,6 +143,7 @@ void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
     pair.status = PointPair::Status::Singular;
     return;
   }
+  pair.contactMatrix = k;
   pair.inverseContactMatrix = k.inverse();
   pair.inverseNormalMatrix = k.topLeftCorner<2, 2>().inverse();
   pair.status = PointPair::Status::Inverted;
@@ -420,6 +421,30 @@ void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointS
   }
 }
 
+// The pair's totals when static friction cannot hold it: dynamic friction, the tangent total μ
+// times the normal total in the direction static friction would have pushed (as newTotalImpulse
+// does for one point), and the two normal totals that still give both points their wanted
+// normal change: Σⱼ K(i, j)(afterⱼ − beforeⱼ) = changeᵢ for the two normal rows, with
+// after₂ = σ μ (after₀ + after₁). False when that 2×2 system is as ill-conditioned as a pair
+// matrix may not be (pairConditionLimit, Hadamard's ratio as in invertPairContactMatrix).
+bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen::Vector3d& before,
+                                             const Eigen::Vector3d& change, double friction,
+                                             Eigen::Vector3d& after) const {
+  const Eigen::Matrix3d& k = pair.contactMatrix;
+  const double slide = (after(2) > 0.0 ? 1.0 : -1.0) * friction;
+  Eigen::Matrix2d system;
+  Eigen::Vector2d right;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) system(i, j) = k(i, j) + slide * k(i, 2);
+    right(i) = change(i) + k.row(i) * before;
+  }
+  const double diagonal = std::abs(system(0, 0) * system(1, 1));
+  if (!(std::abs(system.determinant()) > diagonal / settings_.pairConditionLimit)) return false;
+  const Eigen::Vector2d normals = system.inverse() * right;
+  after << normals(0), normals(1), slide * (normals(0) + normals(1));
+  return true;
+}
+
 // Both points of the worst point's manifold in one micro-collision: the impulses that give both
 // points their wanted normal change and stop the face slipping, through the pair's contact
 // matrix. The friction total is shared between the points in proportion to their normal totals,
@@ -427,8 +452,9 @@ void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointS
 // need resolving (a pair impulse where one corner is already resolved costs a settling pile more
 // than it saves: on a 40-row pyramid, 1.3 times the time over 300 steps), both are to bounce or
 // neither (with pairBounces; without it a bounce passes point by point, as in the cradle), and
-// the new totals push at both points with static friction; otherwise false, and the worst point
-// is resolved alone. A frictionless pair (friction off, or μ = 0) takes only the normal changes,
+// the new totals push at both points, with static friction or, where static friction cannot hold
+// the pair, dynamic friction (slidingPairTotals); otherwise false, and the worst point is
+// resolved alone. A frictionless pair (friction off, or μ = 0) takes only the normal changes,
 // through the normal rows of the contact matrix. A pair that bounces takes each point to its
 // bounce on its closing velocity now, and both count as bounced.
 bool MicroCollisionSolver::applyPairChange(const StepContext& context, const PointState& worst,
@@ -460,17 +486,20 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
   } else {
     after = before + pair.inverseContactMatrix * change;
   }
+  const bool sliding =
+      !frictionless && std::abs(after(2)) > manifold.friction * (after(0) + after(1));
+  if (sliding && !slidingPairTotals(pair, before, change, manifold.friction, after)) return false;
   const double normalTotal = after(0) + after(1);
-  if (after(0) <= 0.0 || after(1) <= 0.0 || std::abs(after(2)) > manifold.friction * normalTotal) {
-    return false;
-  }
+  if (after(0) <= 0.0 || after(1) <= 0.0) return false;
   std::array<Vec2, 2> impulses;
   for (int i = 0; i < 2; ++i) {
     PointState& point = *points[i];
     const Vec2 total(after(i), after(2) * after(i) / normalTotal);
     impulses[i] = total - point.totalImpulse;
     point.totalImpulse = total;
-    point.friction = frictionless ? FrictionState::None : FrictionState::Static;
+    point.friction = frictionless ? FrictionState::None
+                     : sliding    ? FrictionState::Dynamic
+                                  : FrictionState::Static;
     point.bounced = point.bounced || bounce;
     ContactPoint& record = manifold.points[point.point];
     record.bounced = point.bounced;

@@ -84,6 +84,8 @@ class MicroCollisionSolver : public ContactSolver {
     enum class Status { NotInverted, Inverted, Singular };
     int first = 0;
     Status status = Status::NotInverted;
+    /// (normal at the first, normal at the second, tangent) impulses -> velocity changes
+    Eigen::Matrix3d contactMatrix;
     /// (normal at the first, normal at the second, tangent) velocity changes -> impulses
     Eigen::Matrix3d inverseContactMatrix;
     /// the same for the two normals alone, for a frictionless pair
@@ -108,6 +110,9 @@ class MicroCollisionSolver : public ContactSolver {
   void preparePairs();
   void invertPairContactMatrix(PointPair& pair) const;
   bool applyPairChange(const StepContext& context, const PointState& worst, int iteration);
+  bool slidingPairTotals(const PointPair& pair, const Eigen::Vector3d& before,
+                         const Eigen::Vector3d& change, double friction,
+                         Eigen::Vector3d& after) const;
   void afterImpulse(const StepContext& context, const PointState& state);
   double severity(const PointState& state) const;
   bool toBounce(const PointState& state) const;
