@@ -417,10 +417,7 @@ int answeredLikeLemke(int piles, bool enterSliding) {
                              std::abs(one.angularVelocity - other.angularVelocity)});
     }
     INFO("pile " << pile << ", enter_sliding " << enterSliding);
-    // Each answer meets the relative residual kResidual, so each holds the velocities to about
-    // that much of the step's scale (up to 1 m/s here), no better: they agree to a few 1e-9
-    // (at most 2.6e-9 measured), and to 1e-8 a velocity of either that broke a condition shows.
-    CHECK(difference < 1e-8);
+    CHECK(difference < 1e-9);
   }
   return answered;
 }

@@ -34,7 +34,6 @@ struct SlopeRun {
   double distance = 0.0;         ///< m travelled down the slope
   double acceleration = 0.0;     ///< m/s², from the velocity between t = 1 s and t = 3 s
   double rollingMismatch = 0.0;  ///< |v − ω r| / |v| at the end, for disks
-  double depth = 0.0;            ///< m, the deepest contact point's penetration at the end
 };
 
 /// The body on `ground(friction, angle)` in `scene` (its solver and settings), run for `seconds`.
@@ -57,11 +56,6 @@ SlopeRun runOnSlopeIn(Scene scene, const BodyDef& body, double angle, double fri
   SlopeRun run;
   run.distance = (end.position - start).dot(down);
   run.acceleration = (speedAtThree - speedAtOne) / 2.0;
-  for (const Manifold& manifold : world->manifolds()) {
-    for (int i = 0; i < manifold.pointCount; ++i) {
-      run.depth = std::max(run.depth, manifold.points[size_t(i)].penetration);
-    }
-  }
   if (end.shape.type == ShapeType::Circle && end.velocity.norm() > 0.0) {
     // Rolling down a slope that falls to the left means turning counter-clockwise.
     run.rollingMismatch = std::abs(end.velocity.norm() - end.angularVelocity * end.shape.radius) /
@@ -133,11 +127,9 @@ TEST_CASE("a disk with enough friction rolls at (2/3) g sin θ", "[friction][rol
 // Soft step measures a contact's separation within the step from how far its anchors moved. A
 // disc's anchor turned with the disc lifts off the slope by r(1 − cos Δθ), so a small disc that
 // turns far in a step reads a gap and is held up less: 0.1 m on 30° at 60 Hz turns 0.5–1.6 rad a
-// step between 1 and 3 s and sinks 7 mm into the slope. A circle's surface under the contact does
-// not change as it turns: with round surfaces the anchor follows the centre alone, and the disc
-// rests 0.07 mm deep. (Until the impulses acted on the disc's own surface, contact.h, the sunken
-// disc also rolled on an arm short by half its depth: 2.7 % and 3.2 % slow on 20° and 30°.)
-TEST_CASE("soft step: a small disc turning fast rolls on the slope's surface with round surfaces",
+// step between 1 and 3 s and rolled 3.2 % slow. A circle's surface under the contact does not
+// change as it turns: with round surfaces the anchor follows the centre alone.
+TEST_CASE("soft step: a small disc turning fast rolls at (2/3) g sin θ with round surfaces",
           "[friction][rolling][soft_step]") {
   const double friction = 0.6;  // rolling needs μ ≥ tan θ / 3, at most 0.33 here
   for (const double degreesOfSlope : {10.0, 20.0, 30.0}) {  // 3 s of rolling stay on the slope
@@ -150,13 +142,11 @@ TEST_CASE("soft step: a small disc turning fast rolls on the slope's surface wit
           runOnSlopeIn(scene, lecture::diskOnSlope(0.1, angle, friction), angle, friction, 3.0);
       INFO(degreesOfSlope << " deg, round surfaces " << round << ": a = " << run.acceleration
                           << " m/s^2, analytic " << expected);
-      INFO("resting " << run.depth << " m deep");
-      CHECK(run.acceleration == Approx(expected).epsilon(0.005));
       if (round) {
+        CHECK(run.acceleration == Approx(expected).epsilon(0.005));
         CHECK(run.rollingMismatch < 0.005);
-        CHECK(run.depth < 1e-4);
-      } else {  // 2.5, 6.6 and 7.1 mm: the turning anchor reads a gap of r(1 − cos Δθ)
-        CHECK(run.depth > 2e-3);
+      } else if (degreesOfSlope >= 20.0) {  // up to 1.1 and 1.6 rad a step: 2.7, 3.2 % slow
+        CHECK(run.acceleration < (1.0 - 0.02) * expected);
       }
     }
   }
@@ -332,63 +322,6 @@ TEST_CASE("a pushed box carries the box on it below F = 2 μ m g and slides from
                   << ", " << expected.y());
       CHECK(accelerations.x() == Approx(expected.x()).epsilon(0.005));
       CHECK(accelerations.y() == Approx(expected.y()).epsilon(0.005));
-    }
-  }
-}
-
-// Where a contact's impulses act against a static body decides a landed disc's arm: the moving
-// body's own surface (impulsePoint, contact.h), so the disc rolls on its radius even while it
-// rests in the position pass's slop. With the impulses midway into a 5 mm overlap (Box2D's rule,
-// ours until 2026-11-27) a landed 0.1 m disc rolled on an arm 2.5 mm short, 1.3–1.7 % slow under
-// sequential impulses and the reference, outside this test's 0.5 %.
-TEST_CASE("a small disc landing on a slope rolls on its radius, however deep it rests",
-          "[friction][rolling][landing]") {
-  const double radius = 0.1;
-  const double lift = 0.05;
-  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
-    for (const double degreesOfSlope : {5.0, 15.0, 30.0}) {
-      const double angle = degrees(degreesOfSlope);
-      const double friction = 2.0 * std::tan(angle) / 3.0;  // twice what rolling needs
-      const double expected = 2.0 / 3.0 * lecture::kGravity * std::sin(angle);
-      const SlopeRun run = runOnSlope(lecture::diskOnSlope(radius, angle, friction, lift), angle,
-                                      friction, 3.0, solver);
-      INFO(solver << ", " << degreesOfSlope << " deg: a = " << run.acceleration
-                  << " m/s^2, analytic " << expected << ", resting " << run.depth << " m deep");
-      CHECK(run.acceleration == Approx(expected).epsilon(0.005));
-      CHECK(run.rollingMismatch < 0.005);
-    }
-  }
-}
-
-// A sticking impact: a disc thrown at the floor at (3, −4) m/s without gravity, friction enough
-// to stop its contact point's slip (μ ≥ 1/(4(1 + e))). The friction impulse P brings v − ω r to 0
-// with v = 3 − P/m and ω = P r / I, so P = m·3 / 3 and v = 2 m/s for a disc. At 60 Hz the 0.2 m
-// disc is caught 3.3 cm into the floor: with its impulses acting halfway into that overlap it
-// stuck on an arm of 0.183 m and left at 1.88 m/s under micro, sequential impulses and the
-// reference (Box2D 2.4.1: 1.84), soft step at 2.10.
-TEST_CASE("a disc thrown at the floor sticks at (2/3) of its sideways speed",
-          "[friction][collision]") {
-  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
-    for (const double restitution : {0.0, 0.5}) {
-      for (const double radius : {0.2, 1.0}) {
-        Scene scene = lecture::sceneWith(solver, kDt);
-        scene.world.gravity = Vec2::Zero();
-        BodyDef floor = lecture::ground(1.0);
-        floor.restitution = restitution;
-        scene.bodies.push_back(floor);
-        BodyDef disc = lecture::diskOnSlope(radius, 0.0, 1.0, 0.3);
-        disc.restitution = restitution;
-        disc.velocity = Vec2(3.0, -4.0);
-        scene.bodies.push_back(disc);
-        auto world = buildWorld(scene);
-        for (int step = 0; step < 30; ++step) world->step();  // it lands in step 5
-        const Body& end = world->bodies()[1];
-        INFO(solver << ", e " << restitution << ", radius " << radius << ": v = ("
-                    << end.velocity.x() << ", " << end.velocity.y()
-                    << ") m/s, omega r = " << -end.angularVelocity * radius << " m/s");
-        CHECK(end.velocity.x() == Approx(2.0).epsilon(0.005));
-        CHECK(-end.angularVelocity * radius == Approx(2.0).epsilon(0.005));
-      }
     }
   }
 }

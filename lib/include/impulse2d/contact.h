@@ -9,8 +9,6 @@
 //   velocity: vn < 0 closing (approaching), vn > 0 separating.
 // - The tangent is t = leftPerpendicular(n) (n turned +90°); a friction impulse λt acts as +λt t
 //   on B and −λt t on A, like the normal impulse.
-// - Both impulses act at one world point (impulsePoint below): on the moving body's own surface
-//   when the other body is static, midway between the two surfaces when both move.
 #pragma once
 
 #include <array>
@@ -38,19 +36,8 @@ enum class FrictionState { None, Static, Dynamic };
 /// negative. Unknown: the reference did not solve the point last step.
 enum class ContactState { Unknown, Separated, Sticking, SlidingPositive, SlidingNegative };
 
-/// Where a contact's impulses act, from the points on A's and B's surfaces. Against a static body
-/// (which no impulse moves) on the moving body's own surface, so its arm is exact however deep
-/// it sits: a disc resting in the position pass's 5 mm slop still rolls on its radius, and one
-/// caught after sinking into the floor sticks at its lowest point. Between two moving bodies
-/// midway, so one point carries both impulses and the pair's angular momentum is kept.
-inline Vec2 impulsePoint(const Vec2& onA, const Vec2& onB, bool aIsStatic, bool bIsStatic) {
-  if (bIsStatic) return onA;
-  if (aIsStatic) return onB;
-  return 0.5 * (onA + onB);
-}
-
 struct ContactPoint {
-  Vec2 point = Vec2::Zero();    ///< world point where impulses act (impulsePoint)
+  Vec2 point = Vec2::Zero();    ///< world point where impulses act: midway between the surfaces
   Vec2 anchorA = Vec2::Zero();  ///< the point on A's surface, in A's body frame
   Vec2 anchorB = Vec2::Zero();  ///< the point on B's surface, in B's body frame
   double penetration = 0.0;     ///< m, along the normal; negative is a gap

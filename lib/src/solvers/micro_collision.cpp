@@ -595,11 +595,10 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
   resolvePoint(context, index, iteration);
 }
 
-// The contact point now: impulsePoint (contact.h) of the anchors at the current poses.
+// The contact point now: midway between the anchors on the two surfaces at the current poses.
 Vec2 MicroCollisionSolver::contactPointNow(const MovePoint& point) const {
-  const Pose& a = poses_[point.bodyA];
-  const Pose& b = poses_[point.bodyB];
-  return impulsePoint(a.toWorld(point.anchorA), b.toWorld(point.anchorB), !a.movable, !b.movable);
+  return 0.5 *
+         (poses_[point.bodyA].toWorld(point.anchorA) + poses_[point.bodyB].toWorld(point.anchorB));
 }
 
 // The other point of the manifold of states_[index], or −1 for a one-point manifold. prepare

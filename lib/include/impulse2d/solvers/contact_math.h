@@ -107,10 +107,9 @@ void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, in
 
 // ---- where a contact is now ----
 
-/// Where the manifold's point's impulses act (impulsePoint) at the bodies' current poses.
+/// The manifold's point midway between the two surface anchors at the bodies' current poses.
 inline Vec2 currentContactPoint(const Body& a, const Body& b, const ContactPoint& point) {
-  return impulsePoint(a.toWorld(point.anchorA), b.toWorld(point.anchorB), a.isStatic(),
-                      b.isStatic());
+  return 0.5 * (a.toWorld(point.anchorA) + b.toWorld(point.anchorB));
 }
 
 /// The penetration of a manifold's point at the bodies' current poses: the anchor on A minus the
