@@ -271,8 +271,8 @@ TEST_CASE("a disc thrown sliding rolls off at (2/3) v₀ after v₀ / (3 μ g)",
         double rollingFrom = -1.0;  // s: the first step that ends with the slip under 1 mm/s
         for (int step = 1; step * kDt < slipTime + 1.0; ++step) {
           world->step();
-          const Body& disc = world->bodies()[1];
-          const double slip = disc.velocity.x() + disc.angularVelocity * radius;
+          const Body& moving = world->bodies()[1];
+          const double slip = moving.velocity.x() + moving.angularVelocity * radius;
           if (rollingFrom < 0.0 && std::abs(slip) < 1e-3) rollingFrom = step * kDt;
         }
         const double speed = world->bodies()[1].velocity.x();

@@ -15,6 +15,7 @@ using namespace impulse2d;
 
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadius = 0.2;
 constexpr double kDropHeight = 1.0;  // m, of the ball's lowest point above the ground
 constexpr double kRestitution = 0.8;
@@ -204,7 +205,9 @@ TEST_CASE("a box sliding flat into a wall rebounds at e times its speed, without
         INFO(solver << ", width " << width << ", e " << restitution << ": v = " << end.velocity.x()
                     << " m/s, spin " << end.angularVelocity << " rad/s");
         CHECK(end.velocity.x() == Approx(-3.0 * restitution).epsilon(0.005));
-        CHECK(std::abs(end.angularVelocity) < 1e-6);
+        // Turning moves a corner by ω·h/2 against the other (h = 1 m, the face on the wall):
+        // under 0.1 % of the 3 m/s (point by point turned the box at 0.39 rad/s and more).
+        CHECK(std::abs(end.angularVelocity) * 0.5 < 1e-3 * 3.0);
       }
     }
   }
@@ -317,7 +320,7 @@ TEST_CASE("two discs colliding head-on leave at Newton's velocities, momentum ke
 TEST_CASE("a box landing on a corner on frictionless ground keeps its centre's x",
           "[restitution][collision]") {
   for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
-    for (const double tilt : {0.3, 0.785398}) {  // rad
+    for (const double tilt : {0.3, kPi / 4.0}) {  // rad
       Scene scene = lecture::sceneWith(solver, 1.0 / 60.0);
       scene.bodies.push_back(lecture::ground(0.0));
       BodyDef box;
@@ -338,8 +341,9 @@ TEST_CASE("a box landing on a corner on frictionless ground keeps its centre's x
       CHECK(largestShift < 1e-9);
       // At rest on a face: tilted by at most the 5 mm slop (sequential impulses' allowed
       // penetration) across its 1 m width, one corner that much deeper than the other.
-      const double quarterTurns = world->bodies()[1].angle / (0.5 * std::acos(-1.0));
-      CHECK(std::abs(quarterTurns - std::round(quarterTurns)) * 0.5 * std::acos(-1.0) < 0.005);
+      const double angle = world->bodies()[1].angle;
+      const double offFace = std::abs(angle - kPi / 2.0 * std::round(angle / (kPi / 2.0)));
+      CHECK(offFace < 0.005);
     }
   }
 }
@@ -354,8 +358,7 @@ TEST_CASE("a box landing on a corner on frictionless ground keeps its centre's x
 // bounce and the spin are checked for it (its slide keeps μ e |vn| more: docs/soft-step.md).
 TEST_CASE("a box landing flat on a slope while sliding bounces straight off it with friction",
           "[restitution][pair-bounces][friction]") {
-  constexpr double kPiHere = 3.14159265358979323846;
-  const double angle = kPiHere / 6.0;
+  const double angle = kPi / 6.0;
   const Vec2 normal(-std::sin(angle), std::cos(angle));
   const Vec2 along(std::cos(angle), std::sin(angle));
   const Vec2 thrown(0.0, -4.0);

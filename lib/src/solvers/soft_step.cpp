@@ -307,15 +307,7 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
   ConstraintPoint& p1 = constraint.points[1];
   if (!bounces(p0) || !bounces(p1)) return false;
   const Vec2& n = constraint.normal;
-  const std::array<double, 2> turnA = {cross(p0.armA, n), cross(p1.armA, n)};
-  const std::array<double, 2> turnB = {cross(p0.armB, n), cross(p1.armB, n)};
-  Mat2 k;
-  for (int i = 0; i < 2; ++i) {
-    for (int j = 0; j < 2; ++j) {
-      k(i, j) = a.inverseMass + b.inverseMass + a.inverseInertia * turnA[i] * turnA[j] +
-                b.inverseInertia * turnB[i] * turnB[j];
-    }
-  }
+  const Mat2 k = normalCouplingMatrix(a, b, n, {p0.armA, p1.armA}, {p0.armB, p1.armB});
   if (!isWellConditioned(k, settings_.pairRestitution.conditionLimit)) return false;
   const Vec2 before(p0.normalImpulse, p1.normalImpulse);
   Vec2 missing;  // vn − target at each point now

@@ -5,6 +5,7 @@
 // another. Signs are those of contact.h.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "impulse2d/body.h"
@@ -85,6 +86,24 @@ inline Mat2 normalCouplingMatrix(const Body& a, const Body& b, const Vec2& norma
   Mat2 k;
   k << unitImpulseResponse(a, b, point0, normal), coupling, coupling,
       unitImpulseResponse(a, b, point1, normal);
+  return k;
+}
+
+/// The same K from the two points' arms, for bodies as a solver holds them (any type with
+/// inverseMass and inverseInertia): for a solver whose arms stay as found while the bodies move
+/// (soft step), so that no world point is shared by both bodies.
+template <typename Masses>
+Mat2 normalCouplingMatrix(const Masses& a, const Masses& b, const Vec2& normal,
+                          const std::array<Vec2, 2>& armsA, const std::array<Vec2, 2>& armsB) {
+  Mat2 k;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      k(i, j) =
+          a.inverseMass + b.inverseMass +
+          a.inverseInertia * cross(armsA[size_t(i)], normal) * cross(armsA[size_t(j)], normal) +
+          b.inverseInertia * cross(armsB[size_t(i)], normal) * cross(armsB[size_t(j)], normal);
+    }
+  }
   return k;
 }
 
