@@ -50,7 +50,8 @@ struct MicroCollisionSettings {
   double restitutionVelocityLimit = 0.25;
   /// Friction as impulses through the 2×2 contact matrix. Off: frictionless normal impulses.
   bool friction = true;
-  /// m/s. Velocity resolution stops when no contact needs a larger velocity change.
+  /// m/s. Velocity resolution stops when no contact needs a larger velocity change; a bounce
+  /// smaller than this is none (the point is not marked as bounced).
   double velocityEpsilon = 1e-4;
   /// m. Penetration resolution stops when no contact penetrates deeper than this. Resting
   /// bodies settle at up to this overlap, and every step the points that sink past it are moved
@@ -77,6 +78,8 @@ struct MicroCollisionSettings {
   /// resolved point to zero overlap, which the next step's contact reads give or take round-off
   /// (1e-16 m): without it, a row of touching balls that reads −1.7e-16 m at one pair stops the
   /// lecture preset's collision there, and the ball behind pushes its neighbour by moves alone.
+  /// A speculative gap closing within the step is judged to the same tolerance, so the two
+  /// corners of a face landing flat engage together.
   double touchingTolerance = 1e-9;
 
   // Refinements of ours, beyond the lecture; each is off in lecture() (docs/micro-collisions.md).

@@ -297,7 +297,7 @@ double MicroCollisionSolver::targetNormalVelocity(const PointState& state) const
   if (!state.bounced) {
     const double restitution = appliedRestitution(state, -separatingVelocity);
     const double bounce = -restitution * (separatingVelocity - state.accelerationVelocity);
-    if (bounce > 0.0) return bounce;
+    if (bounce > settings_.velocityEpsilon) return bounce;
   }
   return settings_.speculativeGaps ? std::min(0.0, state.penetration / dt_) : 0.0;
 }
@@ -320,11 +320,14 @@ Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state) const 
   return Vec2(normalChange, -tangentPart(state.contactVelocity));
 }
 
-// A point the normal rule applies to: it touches (to within touchingTolerance), or (speculative
-// gaps) its gap would close within the step, or (impulse totals) this update already pushes it.
+// A point the normal rule applies to: it touches, or (speculative gaps) its gap would close within
+// the step, both to within touchingTolerance, or (impulse totals) this update already pushes it.
+// The tolerance keeps round-off from parting the two corners of a face that falls flat onto
+// another and just closes its gap in the step: one engaged alone, resolved alone, would spin it.
 bool MicroCollisionSolver::engaged(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
-  const bool gapCloses = settings_.speculativeGaps && separatingVelocity * dt_ < state.penetration;
+  const bool gapCloses = settings_.speculativeGaps &&
+                         separatingVelocity * dt_ < state.penetration + settings_.touchingTolerance;
   const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
   return state.penetration >= -settings_.touchingTolerance || gapCloses || pressed;
 }
