@@ -287,14 +287,15 @@ double MicroCollisionSolver::accelerationVelocity(const StepContext& context,
   return context.dt * relativeAcceleration.dot(manifold.normal);
 }
 
-// The separating velocity a point wants. Until it has bounced, the bounce −c·(vs − vacc) on its
-// closing velocity *now*: as in Millington's resolver, an impulse at a neighbour that changes vs
-// changes the bounce, so a collision passes along a row of touching bodies. Without a bounce
-// (or once it has had it), a contact with a speculative gap may close it within the step, and no
-// more; a touching one should stop closing.
+// The separating velocity a point wants: the bounce −c·(vs − vacc) on its closing velocity *now*,
+// as in Millington's resolver, so an impulse at a neighbour that changes vs changes the bounce and
+// a collision passes along a row of touching bodies. A point that has bounced bounces again only
+// if a neighbour's impulse drives it closing once more (two balls striking a row send two out).
+// Without a bounce, a contact with a speculative gap may close it within the step, and no more; a
+// touching one should stop closing.
 double MicroCollisionSolver::targetNormalVelocity(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
-  if (!state.bounced) {
+  if (!state.bounced || separatingVelocity < 0.0) {
     const double restitution = appliedRestitution(state, -separatingVelocity);
     const double bounce = -restitution * (separatingVelocity - state.accelerationVelocity);
     if (bounce > settings_.velocityEpsilon) return bounce;
@@ -302,17 +303,16 @@ double MicroCollisionSolver::targetNormalVelocity(const PointState& state) const
   return settings_.speculativeGaps ? std::min(0.0, state.penetration / dt_) : 0.0;
 }
 
-// A point whose target is a bounce it has not had yet in this step.
+// A point whose target is a bounce: its first in this step, or another once closing again.
 bool MicroCollisionSolver::toBounce(const PointState& state) const {
-  return !state.bounced && targetNormalVelocity(state) > 0.0;
+  return targetNormalVelocity(state) > 0.0;
 }
 
 // The velocity change a contact point wants. Along the normal, the lecture's
 // Δv = −vs − c·(vs − vacc), i.e. the target minus the separating velocity, while the contact
 // touches, or (speculative gaps) its gap would close within the step, or (impulse totals) this
-// update already pushes it. Along the tangent, all the slip. A point that has bounced is
-// afterwards only kept from closing, so a later impulse at a neighbour does not bounce it again,
-// nor take its bounce back.
+// update already pushes it. Along the tangent, all the slip. A point that has bounced never has
+// its bounce taken back by a later impulse at a neighbour: it only gains impulse.
 Vec2 MicroCollisionSolver::desiredVelocityChange(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
   double normalChange = engaged(state) ? targetNormalVelocity(state) - separatingVelocity : 0.0;
