@@ -282,10 +282,11 @@ TEST_CASE("load-scaled stiffness: without the leak one sweep per substep rattles
   // The impulse scale that lets a loaded spring sag also damps the one Gauss-Seidel sweep a
   // substep gives each contact. Scaled by the load it nearly vanishes (a 10-box stack's bottom
   // points carry load ratios of 12.5 and 22.5), and with 4 substeps the column rattles
-  // (docs/soft-step.md).
+  // (docs/soft-step.md). Point by point, as Box2D v3 solves; block normals hold it still.
   Scene scene = stackScene("soft_step", 10, 0.6);
-  const auto fastestTop = [&](bool loadScaled) {
+  const auto fastestTop = [&](bool loadScaled, bool blockNormals = false) {
     scene.solverSettings.softStep.loadScaledStiffness = loadScaled;
+    scene.solverSettings.softStep.blockNormals.enabled = blockNormals;
     auto world = buildWorld(scene);
     runSteps(*world, stepsIn(2.0));
     double fastest = 0.0;
@@ -297,10 +298,12 @@ TEST_CASE("load-scaled stiffness: without the leak one sweep per substep rattles
   };
   const double off = fastestTop(false);
   const double on = fastestTop(true);
-  WARN("figure: 10-box stack, top's largest speed from 2 s to 10 s: off " << off << " m/s, on "
-                                                                          << on << " m/s");
+  const double onWithBlock = fastestTop(true, true);
+  WARN("figure: 10-box stack, top's largest speed from 2 s to 10 s, point by point: off "
+       << off << " m/s, on " << on << " m/s; on with block normals " << onWithBlock << " m/s");
   CHECK(off < 0.01);
   CHECK(on > 0.1);
+  CHECK(onWithBlock < 0.01);
 }
 
 TEST_CASE(
@@ -310,9 +313,11 @@ TEST_CASE(
   // Friction solved while the bias pushes the overlap out works against impulses that the relax
   // solve then takes back; the column creeps sideways a little every substep and, 20 boxes
   // high, leans over within 10 s. With contact recycling (the default) the column stands
-  // either way (docs/soft-step.md).
+  // either way (docs/soft-step.md). All of it point by point, as Box2D v3 solves; with block
+  // normals (the default) no corner is favoured and the column stands without recycling too.
   constexpr int kBoxes = 20;
   Scene scene = stackScene("soft_step", kBoxes, 0.6);
+  scene.solverSettings.softStep.blockNormals.enabled = false;
   const auto topTravel = [&] {
     auto world = buildWorld(scene);
     runSteps(*world, stepsIn(2.0));
@@ -331,6 +336,12 @@ TEST_CASE(
   CHECK(topTravel() > kLeansOver);
   scene.solverSettings.softStep.frictionInRelax = true;
   CHECK(topTravel() < kStands);
+  scene.solverSettings.softStep.frictionInRelax = false;
+  scene.solverSettings.softStep.blockNormals.enabled = true;
+  const double blockTravel = topTravel();
+  WARN("figure: 20-box stack, no recycling, friction in both solves, block normals: top moves "
+       << blockTravel << " m");
+  CHECK(blockTravel < kStands);
 }
 
 TEST_CASE(
@@ -369,12 +380,13 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "a 40-box stack stands 10 s at the defaults with contact recycling, and buckles without it",
+    "a 40-box stack stands 10 s with contact recycling or block normals, and buckles without both",
     "[soft_step][stack][recycling][stability]") {
   // Found anew every step, a manifold's arms turn with its boxes, and so do the Jacobians the
   // substeps solve with: a box that leans moves its contact points under its weight, and the
   // column's S-shaped mode grows about twofold every 0.6 s. Recycled, as Box2D v3 keeps them,
-  // the arms stay as they were found and the column only sways (docs/soft-step.md).
+  // the arms stay as they were found and the column only sways (docs/soft-step.md). That is
+  // point by point, as v3 solves; with block normals (the default) it stands either way.
   constexpr int kBoxes = 40;
   Scene scene = stackScene("soft_step", kBoxes, 0.6);
   const auto farthestTop = [&] {
@@ -390,13 +402,21 @@ TEST_CASE(
   // 10 s, Box2D v3 3.4 cm). Falls: the top ends up more than a box width off the axis.
   constexpr double kStands = 0.2;  // m
   constexpr double kFalls = 1.0;   // m
-  const double recycled = farthestTop();
+  const double recycledWithBlock = farthestTop();
   scene.solverSettings.softStep.contactRecycling = false;
+  const double foundAnewWithBlock = farthestTop();
+  scene.solverSettings.softStep.blockNormals.enabled = false;
   const double foundAnew = farthestTop();
+  scene.solverSettings.softStep.contactRecycling = true;
+  const double recycled = farthestTop();
   WARN("figure: 40-box stack, top's farthest from the axis in 10 s: recycled "
-       << recycled << " m, found anew " << foundAnew << " m");
+       << recycled << " m, found anew " << foundAnew << " m, point by point; with block normals "
+       << recycledWithBlock << " m and " << foundAnewWithBlock << " m");
   CHECK(recycled < kStands);
   CHECK(foundAnew > kFalls);
+  // Both corners of each box at once, no corner is favoured and no S-shaped mode starts.
+  CHECK(recycledWithBlock < kStands);
+  CHECK(foundAnewWithBlock < kStands);
 }
 
 TEST_CASE("a 40-box stack stands with 16 substeps of 240 Hz contacts", "[soft_step][stack]") {

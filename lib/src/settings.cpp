@@ -150,7 +150,9 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
           {"pair_restitution", &s.pairRestitution.enabled},
-          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit}};
+          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit},
+          {"block_normals", &s.blockNormals.enabled},
+          {"block_normals_condition_limit", &s.blockNormals.conditionLimit}};
 }
 
 }  // namespace impulse2d

@@ -454,6 +454,13 @@ struct SoftStepSettings {
   /// turns the box and the second corner's then partly undoes the bounce (a flat 1 × 0.5 box
   /// dropped 1 m at 60 Hz, e 0.8, rose to 0.37 of e²h spinning at 2.5 rad/s; docs/soft-step.md).
   BlockSolveSettings pairRestitution;
+  /// Block normals, ours beyond Box2D v3: the two normal impulses of a two-point manifold solved
+  /// together in every sweep, each point with its own softness (two_point_block.h), as Box2D
+  /// 2.4's block solver does for rigid contacts. Off: v3's point by point, in which the corner
+  /// solved first takes the landing's impulse alone and turns the body, and friction then turns
+  /// that spin into a slide: a unit box dropped flat 2 m onto μ 0.5 at 60 Hz (e 0.9) leaves its
+  /// first bounce drifting sideways at 0.24 m/s (docs/soft-step.md).
+  BlockSolveSettings blockNormals;
 };
 
 /// The settings of every solver; a scene picks one solver, and its [solver] table sets that

@@ -203,36 +203,71 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
 // circle's with its centre alone (roundSurfaces), every other turned with its body. A gap
 // (s > 0) may close within the substep and no further; an overlap is pushed out at the soft bias
 // rate, never faster than maxPushVelocity.
+SoftStepSolver::NormalRow SoftStepSolver::normalRow(const Constraint& constraint,
+                                                    const ConstraintPoint& cp, const SolverBody& a,
+                                                    const SolverBody& b, bool useBias) const {
+  const Vec2 armA = constraint.turnArmA ? rotate(a.deltaCos, a.deltaSin, cp.armA) : cp.armA;
+  const Vec2 armB = constraint.turnArmB ? rotate(b.deltaCos, b.deltaSin, cp.armB) : cp.armB;
+  const Vec2 anchorsMoved = b.deltaPosition - a.deltaPosition + armB - armA;
+  const double separation = cp.baseSeparation + anchorsMoved.dot(constraint.normal);
+  if (separation > 0.0) return {separation * inverseSubstep_, 1.0, 0.0};
+  if (!useBias) return {};
+  const Softness& soft = cp.softness;
+  return {std::max(soft.biasRate * separation, -pushVelocity_), soft.massScale, soft.impulseScale};
+}
+
 void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b,
                                   bool useBias) {
+  if (solveNormalsAsBlock(constraint, a, b, useBias)) return;
   const Vec2 normal = constraint.normal;
-  const Vec2 moved = b.deltaPosition - a.deltaPosition;
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[size_t(i)];
-    const Softness& soft = cp.softness;
-    const Vec2 armA = constraint.turnArmA ? rotate(a.deltaCos, a.deltaSin, cp.armA) : cp.armA;
-    const Vec2 armB = constraint.turnArmB ? rotate(b.deltaCos, b.deltaSin, cp.armB) : cp.armB;
-    const Vec2 anchorsMoved = moved + armB - armA;
-    const double separation = cp.baseSeparation + anchorsMoved.dot(normal);
-    double bias = 0.0;
-    double massScale = 1.0;
-    double impulseScale = 0.0;
-    if (separation > 0.0) {
-      bias = separation * inverseSubstep_;
-    } else if (useBias) {
-      bias = std::max(soft.biasRate * separation, -pushVelocity_);
-      massScale = soft.massScale;
-      impulseScale = soft.impulseScale;
-    }
+    const NormalRow row = normalRow(constraint, cp, a, b, useBias);
     const double vn = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(normal);
     const double impulse =
-        -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+        -cp.normalMass * row.massScale * (vn + row.bias) - row.impulseScale * cp.normalImpulse;
     const double total = std::max(cp.normalImpulse + impulse, 0.0);
     const double change = total - cp.normalImpulse;
     cp.normalImpulse = total;
     cp.totalNormalImpulse += change;
     applyPairImpulse(a, b, cp.armA, cp.armB, change * normal);
   }
+}
+
+// Both normal impulses of a two-point manifold at once (blockNormals). Point i alone would take
+// Δλᵢ = −(sᵢ/kᵢᵢ)(vᵢ + biasᵢ) − γᵢλᵢ (mass scale s, impulse scale γ); together, row i of
+// (1/sᵢ)·K(λ' − λ) + (kᵢᵢγᵢ/sᵢ)·λᵢ + v + bias ≥ 0 with λ' ≥ 0 and the two complementary, which is
+// that rule when K is diagonal. False, solving nothing, for one point, with the switch off, or a
+// K too ill-conditioned to solve as a block.
+bool SoftStepSolver::solveNormalsAsBlock(Constraint& constraint, SolverBody& a, SolverBody& b,
+                                         bool useBias) {
+  if (!settings_.blockNormals.enabled || constraint.pointCount != 2) return false;
+  ConstraintPoint& p0 = constraint.points[0];
+  ConstraintPoint& p1 = constraint.points[1];
+  const Vec2& n = constraint.normal;
+  const Mat2 k = normalCouplingMatrix(a, b, n, {p0.armA, p1.armA}, {p0.armB, p1.armB});
+  if (!isWellConditioned(k, settings_.blockNormals.conditionLimit)) return false;
+  const Vec2 before(p0.normalImpulse, p1.normalImpulse);
+  Mat2 rows;
+  Vec2 q;
+  for (int i = 0; i < 2; ++i) {
+    const ConstraintPoint& cp = constraint.points[size_t(i)];
+    const NormalRow row = normalRow(constraint, cp, a, b, useBias);
+    if (!(row.massScale > 0.0)) return false;
+    const double vn = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(n);
+    rows.row(i) = k.row(i) / row.massScale;
+    q(i) = vn + row.bias - rows.row(i).dot(before) +
+           k(i, i) * row.impulseScale / row.massScale * before(i);
+  }
+  const Vec2 after = solveTwoPointLcp(rows, q);
+  for (int i = 0; i < 2; ++i) {
+    ConstraintPoint& cp = constraint.points[size_t(i)];
+    const double change = after(i) - before(i);
+    cp.normalImpulse = after(i);
+    cp.totalNormalImpulse += change;
+    applyPairImpulse(a, b, cp.armA, cp.armB, change * n);
+  }
+  return true;
 }
 
 // Coulomb friction on each point's running total, bounded by μ times its normal impulse.
