@@ -313,8 +313,8 @@ TEST_CASE(
   // Friction solved while the bias pushes the overlap out works against impulses that the relax
   // solve then takes back; the column creeps sideways a little every substep and, 20 boxes
   // high, leans over within 10 s. With contact recycling (the default) the column stands
-  // either way (docs/soft-step.md). All of it point by point, as Box2D v3 solves; with block
-  // normals (the default) no corner is favoured and the column stands without recycling too.
+  // either way (docs/soft-step.md). All of it point by point, as Box2D v3 solves (the default);
+  // with block normals no corner is favoured and the column stands without recycling too.
   constexpr int kBoxes = 20;
   Scene scene = stackScene("soft_step", kBoxes, 0.6);
   scene.solverSettings.softStep.blockNormals.enabled = false;
@@ -386,7 +386,7 @@ TEST_CASE(
   // substeps solve with: a box that leans moves its contact points under its weight, and the
   // column's S-shaped mode grows about twofold every 0.6 s. Recycled, as Box2D v3 keeps them,
   // the arms stay as they were found and the column only sways (docs/soft-step.md). That is
-  // point by point, as v3 solves; with block normals (the default) it stands either way.
+  // point by point, as v3 solves (the default); with block normals it stands either way.
   constexpr int kBoxes = 40;
   Scene scene = stackScene("soft_step", kBoxes, 0.6);
   const auto farthestTop = [&] {
@@ -402,6 +402,7 @@ TEST_CASE(
   // 10 s, Box2D v3 3.4 cm). Falls: the top ends up more than a box width off the axis.
   constexpr double kStands = 0.2;  // m
   constexpr double kFalls = 1.0;   // m
+  scene.solverSettings.softStep.blockNormals.enabled = true;
   const double recycledWithBlock = farthestTop();
   scene.solverSettings.softStep.contactRecycling = false;
   const double foundAnewWithBlock = farthestTop();
