@@ -261,15 +261,20 @@ bool SoftStepSolver::solveNormalsAsBlock(Constraint& constraint, SolverBody& a, 
     q(i) = vn + row.bias - rows.row(i).dot(before) +
            k(i, i) * row.impulseScale / row.massScale * before(i);
   }
-  const Vec2 after = solveTwoPointLcp(rows, q);
+  setPairNormalImpulses(constraint, a, b, solveTwoPointLcp(rows, q));
+  return true;
+}
+
+// Both points' accumulated normal impulses set to `after`, the change applied to the bodies.
+void SoftStepSolver::setPairNormalImpulses(Constraint& constraint, SolverBody& a, SolverBody& b,
+                                           const Vec2& after) const {
   for (int i = 0; i < 2; ++i) {
     ConstraintPoint& cp = constraint.points[size_t(i)];
-    const double change = after(i) - before(i);
+    const double change = after(i) - cp.normalImpulse;
     cp.normalImpulse = after(i);
     cp.totalNormalImpulse += change;
-    applyPairImpulse(a, b, cp.armA, cp.armB, change * n);
+    applyPairImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
   }
-  return true;
 }
 
 // Coulomb friction on each point's running total, bounded by μ times its normal impulse.
@@ -353,14 +358,7 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
     const double vn = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(n);
     missing(i) = vn + constraint.restitution * cp.relativeVelocity;
   }
-  const Vec2 after = solveTwoPointLcp(k, Vec2(missing - k * before));
-  for (int i = 0; i < 2; ++i) {
-    ConstraintPoint& cp = constraint.points[size_t(i)];
-    const double change = after(i) - before(i);
-    cp.normalImpulse = after(i);
-    cp.totalNormalImpulse += change;
-    applyPairImpulse(a, b, cp.armA, cp.armB, change * n);
-  }
+  setPairNormalImpulses(constraint, a, b, solveTwoPointLcp(k, Vec2(missing - k * before)));
   return true;
 }
 

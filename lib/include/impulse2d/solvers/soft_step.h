@@ -113,6 +113,8 @@ class SoftStepSolver : public ContactSolver {
   NormalRow normalRow(const Constraint& constraint, const ConstraintPoint& cp, const SolverBody& a,
                       const SolverBody& b, bool useBias) const;
   bool solveNormalsAsBlock(Constraint& constraint, SolverBody& a, SolverBody& b, bool useBias);
+  void setPairNormalImpulses(Constraint& constraint, SolverBody& a, SolverBody& b,
+                             const Vec2& after) const;
   void solveFriction(Constraint& constraint, SolverBody& a, SolverBody& b) const;
   void integratePositions(double h);
   void applyRestitution();
