@@ -95,6 +95,12 @@ class SoftStepSolver : public ContactSolver {
     bool turnArmB = true;
     std::array<ConstraintPoint, 2> points;
   };
+  /// What a point's normal row asks in this sweep: its bias velocity and its softness.
+  struct NormalRow {
+    double bias = 0.0;
+    double massScale = 1.0;
+    double impulseScale = 0.0;
+  };
 
   void prepareBodies(const StepContext& context, double h);
   void prepareConstraints(const StepContext& context, double h);
@@ -104,12 +110,6 @@ class SoftStepSolver : public ContactSolver {
   void warmStart();
   double solve(const StepContext& context, bool useBias, int substep);
   void solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b, bool useBias);
-  /// What a point's normal row asks in this sweep: its bias velocity and its softness.
-  struct NormalRow {
-    double bias = 0.0;
-    double massScale = 1.0;
-    double impulseScale = 0.0;
-  };
   NormalRow normalRow(const Constraint& constraint, const ConstraintPoint& cp, const SolverBody& a,
                       const SolverBody& b, bool useBias) const;
   bool solveNormalsAsBlock(Constraint& constraint, SolverBody& a, SolverBody& b, bool useBias);
