@@ -33,12 +33,12 @@ int noContact(Manifold& manifold) {
   return 0;
 }
 
-/// A contact point from the points on A's and B's surfaces (world): impulses act midway; the
-/// arms to it from the centres are kept as found.
+/// A contact point from the points on A's and B's surfaces (world): impulses act at
+/// contactPointBetween (contact.h); the arms to it from the centres are kept as found.
 ContactPoint contactPoint(const Body& a, const Body& b, const Vec2& onA, const Vec2& onB,
                           double penetration, FeatureId id) {
   ContactPoint point;
-  point.point = 0.5 * (onA + onB);
+  point.point = contactPointBetween(onA, onB);
   point.anchorA = a.toLocal(onA);
   point.anchorB = b.toLocal(onB);
   point.penetration = penetration;

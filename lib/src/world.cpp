@@ -184,7 +184,7 @@ bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
     const Vec2 onA = a.position + turnOfA * point.foundArmA;
     const Vec2 onB = b.position + turnOfB * point.foundArmB;
     point.penetration = point.foundPenetration - (onB - onA).dot(manifold.normal);
-    point.point = 0.5 * (onA + onB);
+    point.point = contactPointBetween(onA, onB);
     point.carried = true;
   }
   return true;

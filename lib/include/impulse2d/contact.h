@@ -36,8 +36,14 @@ enum class FrictionState { None, Static, Dynamic };
 /// negative. Unknown: the reference did not solve the point last step.
 enum class ContactState { Unknown, Separated, Sticking, SlidingPositive, SlidingNegative };
 
+/// Where a contact's impulses act, from the points on A's and B's surfaces: midway between them,
+/// so one point carries both impulses and the pair's angular momentum is kept.
+inline Vec2 contactPointBetween(const Vec2& onA, const Vec2& onB) {
+  return 0.5 * (onA + onB);
+}
+
 struct ContactPoint {
-  Vec2 point = Vec2::Zero();    ///< world point where impulses act: midway between the surfaces
+  Vec2 point = Vec2::Zero();    ///< world point where impulses act (contactPointBetween)
   Vec2 anchorA = Vec2::Zero();  ///< the point on A's surface, in A's body frame
   Vec2 anchorB = Vec2::Zero();  ///< the point on B's surface, in B's body frame
   double penetration = 0.0;     ///< m, along the normal; negative is a gap

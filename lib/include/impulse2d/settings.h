@@ -463,7 +463,7 @@ struct SoftStepSettings {
   /// recycling. Off by default because one sweep per substep of stiffer pairs unsettles a pile:
   /// pyramid20's settled drift 0.9 → 2.4 mm, energy gained at rest 0.03 → 0.6 J
   /// (docs/soft-step.md).
-  BlockSolveSettings blockNormals{false, 1000.0};
+  BlockSolveSettings blockNormals{false};
 };
 
 /// The settings of every solver; a scene picks one solver, and its [solver] table sets that

@@ -424,17 +424,16 @@ void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointS
   }
 }
 
-// The pair's totals when static friction cannot hold it: dynamic friction, the tangent total μ
-// times the normal total in the direction static friction would have pushed (as newTotalImpulse
-// does for one point), and the two normal totals that still give both points their wanted
-// normal change: Σⱼ K(i, j)(afterⱼ − beforeⱼ) = changeᵢ for the two normal rows, with
-// after₂ = σ μ (after₀ + after₁). False when that 2×2 system is as ill-conditioned as a pair
+// The pair's totals when static friction cannot hold it: dynamic friction, the tangent total
+// `slide` = σμ times the normal total, σ the sign of the total static friction would have needed
+// (as newTotalImpulse does for one point), and the two normal totals that still give both points
+// their wanted normal change: Σⱼ K(i, j)(afterⱼ − beforeⱼ) = changeᵢ for the two normal rows,
+// with after₂ = σμ (after₀ + after₁). False when that 2×2 system is as ill-conditioned as a pair
 // matrix may not be (pairConditionLimit, Hadamard's ratio as in invertPairContactMatrix).
 bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen::Vector3d& before,
-                                             const Eigen::Vector3d& change, double friction,
+                                             const Eigen::Vector3d& change, double slide,
                                              Eigen::Vector3d& after) const {
   const Eigen::Matrix3d& k = pair.contactMatrix;
-  const double slide = (after(2) > 0.0 ? 1.0 : -1.0) * friction;
   Eigen::Matrix2d system;
   Eigen::Vector2d right;
   for (int i = 0; i < 2; ++i) {
@@ -491,7 +490,8 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
   }
   const bool sliding =
       !frictionless && std::abs(after(2)) > manifold.friction * (after(0) + after(1));
-  if (sliding && !slidingPairTotals(pair, before, change, manifold.friction, after)) return false;
+  const double slide = (after(2) > 0.0 ? 1.0 : -1.0) * manifold.friction;
+  if (sliding && !slidingPairTotals(pair, before, change, slide, after)) return false;
   const double normalTotal = after(0) + after(1);
   if (after(0) <= 0.0 || after(1) <= 0.0) return false;
   std::array<Vec2, 2> impulses;
@@ -598,10 +598,10 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
   resolvePoint(context, index, iteration);
 }
 
-// The contact point now: midway between the anchors on the two surfaces at the current poses.
+// The contact point now: contactPointBetween (contact.h) the anchors at the current poses.
 Vec2 MicroCollisionSolver::contactPointNow(const MovePoint& point) const {
-  return 0.5 *
-         (poses_[point.bodyA].toWorld(point.anchorA) + poses_[point.bodyB].toWorld(point.anchorB));
+  return contactPointBetween(poses_[point.bodyA].toWorld(point.anchorA),
+                             poses_[point.bodyB].toWorld(point.anchorB));
 }
 
 // The other point of the manifold of states_[index], or −1 for a one-point manifold. prepare

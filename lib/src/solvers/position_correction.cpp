@@ -27,7 +27,7 @@ struct Correction {
   const BlockSolveSettings& block;
 };
 
-/// A manifold's point at the bodies' current poses: where it is (midway between the surface
+/// A manifold's point at the bodies' current poses: where it is (contactPointBetween the surface
 /// anchors, as currentContactPoint) and how deep (as currentPenetration), from one transform of
 /// each anchor.
 struct CurrentPoint {
@@ -39,7 +39,7 @@ CurrentPoint currentPoint(const Body& a, const Body& b, const Manifold& manifold
   const ContactPoint& point = manifold.points[static_cast<size_t>(index)];
   const Vec2 anchorA = a.toWorld(point.anchorA);
   const Vec2 anchorB = b.toWorld(point.anchorB);
-  return {0.5 * (anchorA + anchorB), (anchorA - anchorB).dot(manifold.normal)};
+  return {contactPointBetween(anchorA, anchorB), (anchorA - anchorB).dot(manifold.normal)};
 }
 
 /// What one sweep should remove at a point: a fraction of the penetration beyond the slop,

@@ -126,7 +126,7 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
       cp.softness = pointSoftness(pairHertz, h, point, cp.normalMass);
       cp.normalImpulse = warm * point.normalImpulse;
       cp.tangentImpulse = warm * point.tangentImpulse;
-      cp.relativeVelocity = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(normal);
+      cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
     }
   }
 }
@@ -223,7 +223,7 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverB
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[size_t(i)];
     const NormalRow row = normalRow(constraint, cp, a, b, useBias);
-    const double vn = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(normal);
+    const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
     const double impulse =
         -cp.normalMass * row.massScale * (vn + row.bias) - row.impulseScale * cp.normalImpulse;
     const double total = std::max(cp.normalImpulse + impulse, 0.0);
@@ -255,8 +255,7 @@ bool SoftStepSolver::solveNormalsAsBlock(Constraint& constraint, SolverBody& a, 
   for (int i = 0; i < 2; ++i) {
     const ConstraintPoint& cp = constraint.points[size_t(i)];
     const NormalRow row = normalRow(constraint, cp, a, b, useBias);
-    if (!(row.massScale > 0.0)) return false;
-    const double vn = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(n);
+    const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(n);
     rows.row(i) = k.row(i) / row.massScale;
     q(i) = vn + row.bias - rows.row(i).dot(before) +
            k(i, i) * row.impulseScale / row.massScale * before(i);
@@ -282,7 +281,7 @@ void SoftStepSolver::solveFriction(Constraint& constraint, SolverBody& a, Solver
   const Vec2 tangent = leftPerpendicular(constraint.normal);
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[size_t(i)];
-    const double vt = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(tangent);
+    const double vt = relativeVelocity(a, b, cp.armA, cp.armB).dot(tangent);
     const double limit = constraint.friction * cp.normalImpulse;
     const double total = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
     const double change = total - cp.tangentImpulse;
@@ -326,8 +325,7 @@ void SoftStepSolver::applyRestitution() {
     for (int i = 0; i < constraint.pointCount; ++i) {
       ConstraintPoint& cp = constraint.points[size_t(i)];
       if (!bounces(cp)) continue;
-      const double vn =
-          (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(constraint.normal);
+      const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(constraint.normal);
       const double impulse = -cp.normalMass * (vn + constraint.restitution * cp.relativeVelocity);
       const double total = std::max(cp.normalImpulse + impulse, 0.0);
       const double change = total - cp.normalImpulse;
@@ -355,7 +353,7 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
   Vec2 missing;  // vn − target at each point now
   for (int i = 0; i < 2; ++i) {
     const ConstraintPoint& cp = constraint.points[size_t(i)];
-    const double vn = (pointVelocity(b, cp.armB) - pointVelocity(a, cp.armA)).dot(n);
+    const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(n);
     missing(i) = vn + constraint.restitution * cp.relativeVelocity;
   }
   setPairNormalImpulses(constraint, a, b, solveTwoPointLcp(k, Vec2(missing - k * before)));

@@ -29,6 +29,12 @@ Vec2 pointVelocity(const Velocities& body, const Vec2& r) {
   return body.velocity + cross(body.angularVelocity, r);
 }
 
+/// The relative velocity at arms rA, rB of two solver bodies: B's material minus A's.
+template <typename Velocities>
+Vec2 relativeVelocity(const Velocities& a, const Velocities& b, const Vec2& rA, const Vec2& rB) {
+  return pointVelocity(b, rB) - pointVelocity(a, rA);
+}
+
 /// The impulse P at arms rA, rB of two solver bodies: −P to A, +P to B.
 template <typename Velocities>
 void applyPairImpulse(Velocities& a, Velocities& b, const Vec2& rA, const Vec2& rB, const Vec2& P) {
@@ -126,9 +132,9 @@ void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, in
 
 // ---- where a contact is now ----
 
-/// The manifold's point midway between the two surface anchors at the bodies' current poses.
+/// Where the manifold's point's impulses act (contactPointBetween) at the bodies' current poses.
 inline Vec2 currentContactPoint(const Body& a, const Body& b, const ContactPoint& point) {
-  return 0.5 * (a.toWorld(point.anchorA) + b.toWorld(point.anchorB));
+  return contactPointBetween(a.toWorld(point.anchorA), b.toWorld(point.anchorB));
 }
 
 /// The penetration of a manifold's point at the bodies' current poses: the anchor on A minus the

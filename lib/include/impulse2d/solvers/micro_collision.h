@@ -111,8 +111,7 @@ class MicroCollisionSolver : public ContactSolver {
   void invertPairContactMatrix(PointPair& pair) const;
   bool applyPairChange(const StepContext& context, const PointState& worst, int iteration);
   bool slidingPairTotals(const PointPair& pair, const Eigen::Vector3d& before,
-                         const Eigen::Vector3d& change, double friction,
-                         Eigen::Vector3d& after) const;
+                         const Eigen::Vector3d& change, double slide, Eigen::Vector3d& after) const;
   void afterImpulse(const StepContext& context, const PointState& state);
   double severity(const PointState& state) const;
   bool toBounce(const PointState& state) const;
