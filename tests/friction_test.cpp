@@ -3,6 +3,7 @@
 // of spin and slip that makes a disk roll at (2/3) g sin θ.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -322,6 +323,54 @@ TEST_CASE("a pushed box carries the box on it below F = 2 μ m g and slides from
                   << ", " << expected.y());
       CHECK(accelerations.x() == Approx(expected.x()).epsilon(0.005));
       CHECK(accelerations.y() == Approx(expected.y()).epsilon(0.005));
+    }
+  }
+}
+
+// Dynamic friction between two moving bodies until it turns static: a box thrown along a long
+// board lying on frictionless ground drags the board with it until both move at the velocity
+// momentum leaves them, v = m₁v₀ / (m₁ + m₂). Friction μ m₁ g decelerates the box and accelerates
+// the board, so the box slips v₀² m₂ / (2 μ g (m₁ + m₂)) along the board first. The discrete stop
+// can add up to a step's slip, v₀ dt.
+TEST_CASE("a box thrown along a free board slides to their common velocity m1 v0 / (m1 + m2)",
+          "[friction][dynamic][momentum]") {
+  const double g = lecture::kGravity;
+  const double v0 = 3.0;  // m/s
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double massRatio : {0.2, 5.0}) {  // box : board
+      for (const double friction : {0.3, 0.6}) {
+        for (const double dt : {1.0 / 60.0, 1.0 / 240.0}) {
+          Scene scene = lecture::sceneWith(solver, dt);
+          scene.bodies.push_back(lecture::ground(0.0));  // frictionless: μ mixes as √(μA μB)
+          BodyDef board = lecture::boxOnSlope(Vec2(6.0, 0.5), 0.0, friction);
+          BodyDef box = lecture::boxOnSlope(Vec2(1.0, 0.5), 0.0, friction, 0.5);
+          box.position.x() = -2.4;
+          box.velocity = Vec2(v0, 0.0);
+          box.density = massRatio * 6.0;  // the board is six times the box's area
+          scene.bodies.push_back(board);
+          scene.bodies.push_back(box);
+          auto world = buildWorld(scene);
+          const double m2 = 1.0 / world->bodies()[1].inverseMass;
+          const double m1 = 1.0 / world->bodies()[2].inverseMass;
+          const double common = m1 * v0 / (m1 + m2);
+          const double slipTime = v0 * m2 / (friction * g * (m1 + m2));
+          const double slip = v0 * v0 * m2 / (2.0 * friction * g * (m1 + m2));
+          const double startGap = world->bodies()[2].position.x() - world->bodies()[1].position.x();
+          while (world->stepCount() * dt < slipTime + 0.5) world->step();
+          const Body& boardNow = world->bodies()[1];
+          const Body& boxNow = world->bodies()[2];
+          const double momentum = m1 * boxNow.velocity.x() + m2 * boardNow.velocity.x();
+          const double slipped = boxNow.position.x() - boardNow.position.x() - startGap;
+          INFO(solver << ", m1/m2 " << massRatio << ", mu " << friction << ", dt " << dt << ": box "
+                      << boxNow.velocity.x() << " m/s, board " << boardNow.velocity.x()
+                      << " m/s (analytic " << common << "), slipped " << slipped << " m (analytic "
+                      << slip << ")");
+          CHECK(boxNow.velocity.x() == Approx(common).epsilon(0.01));
+          CHECK(boardNow.velocity.x() == Approx(common).epsilon(0.01));
+          CHECK(momentum == Approx(m1 * v0).epsilon(1e-9));
+          CHECK(std::abs(slipped - slip) < 0.03 * slip + v0 * dt);
+        }
+      }
     }
   }
 }
