@@ -560,8 +560,10 @@ void MicroCollisionSolver::loadPoses(const StepContext& context) {
   poses_.resize(context.bodies.size());
   for (size_t i = 0; i < context.bodies.size(); ++i) {
     const Body& body = context.bodies[i];
+    const double roundRadius = surfaceTurnsWithShape(body.shape) ? 0.0 : body.shape.radius;
     poses_[i] = {body.position,    body.angle,          body.rotation(0, 0), body.rotation(1, 0),
-                 body.inverseMass, body.inverseInertia, !body.isStatic(),    false};
+                 body.inverseMass, body.inverseInertia, !body.isStatic(),    false,
+                 roundRadius};
   }
 }
 
@@ -579,9 +581,11 @@ void MicroCollisionSolver::storePose(const StepContext& context, int body) {
   pose.moved = false;
 }
 
-// A point's penetration at the poses now: the anchor on A minus the anchor on B, along the normal.
+// A point's penetration at the poses now: the anchor on A minus the anchor on B, along the normal
+// (a circle's anchor follows its centre alone, anchorNow).
 double MicroCollisionSolver::penetrationNow(const MovePoint& point) const {
-  return (poses_[point.bodyA].toWorld(point.anchorA) - poses_[point.bodyB].toWorld(point.anchorB))
+  return (poses_[point.bodyA].anchorNow(point.anchorA, point.normal) -
+          poses_[point.bodyB].anchorNow(point.anchorB, -point.normal))
       .dot(point.normal);
 }
 
@@ -600,8 +604,8 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
 
 // The contact point now: contactPointBetween (contact.h) the anchors at the current poses.
 Vec2 MicroCollisionSolver::contactPointNow(const MovePoint& point) const {
-  return contactPointBetween(poses_[point.bodyA].toWorld(point.anchorA),
-                             poses_[point.bodyB].toWorld(point.anchorB));
+  return contactPointBetween(poses_[point.bodyA].anchorNow(point.anchorA, point.normal),
+                             poses_[point.bodyB].anchorNow(point.anchorB, -point.normal));
 }
 
 // The other point of the manifold of states_[index], or −1 for a one-point manifold. prepare

@@ -38,7 +38,13 @@ class MicroCollisionSolver : public ContactSolver {
     double inverseInertia = 0.0;
     bool movable = false;  ///< not static
     bool moved = false;    ///< since the body last got its pose
+    /// m. A circle's radius, 0 for a shape whose surface turns with it (surfaceTurnsWithShape).
+    double roundRadius = 0.0;
     Vec2 toWorld(const Vec2& local) const { return position + rotate(cosine, sine, local); }
+    /// A contact's anchor on this body now, as anchorNow (contact_math.h) places it.
+    Vec2 anchorNow(const Vec2& anchor, const Vec2& outward) const {
+      return roundRadius > 0.0 ? Vec2(position + roundRadius * outward) : toWorld(anchor);
+    }
     void turnBy(double turn) {
       angle += turn;
       cosine = std::cos(angle);
