@@ -581,12 +581,23 @@ void MicroCollisionSolver::storePose(const StepContext& context, int body) {
   pose.moved = false;
 }
 
+// A point's normal at the poses now: between two circles the line of their centres (their contact
+// moves round both as they roll or slide on each other, as in Box2D 2.4's position solver; read
+// along the normal found, two circles sliding past each other in a heap are pushed apart along a
+// stale line and rain's heap falls through its floor), otherwise the normal found.
+Vec2 MicroCollisionSolver::normalNow(const MovePoint& point) const {
+  const Pose& a = poses_[point.bodyA];
+  const Pose& b = poses_[point.bodyB];
+  return a.round() && b.round() ? directionOr(a.position, b.position, point.normal) : point.normal;
+}
+
 // A point's penetration at the poses now: the anchor on A minus the anchor on B, along the normal
-// (a circle's anchor follows its centre alone, anchorNow).
+// now (a circle's anchor follows its centre alone, anchorNow).
 double MicroCollisionSolver::penetrationNow(const MovePoint& point) const {
-  return (poses_[point.bodyA].anchorNow(point.anchorA, point.normal) -
-          poses_[point.bodyB].anchorNow(point.anchorB, -point.normal))
-      .dot(point.normal);
+  const Vec2 normal = normalNow(point);
+  return (poses_[point.bodyA].anchorNow(point.anchorA, normal) -
+          poses_[point.bodyB].anchorNow(point.anchorB, -normal))
+      .dot(normal);
 }
 
 int MicroCollisionSolver::worstPenetration() {
@@ -604,8 +615,9 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
 
 // The contact point now: contactPointBetween (contact.h) the anchors at the current poses.
 Vec2 MicroCollisionSolver::contactPointNow(const MovePoint& point) const {
-  return contactPointBetween(poses_[point.bodyA].anchorNow(point.anchorA, point.normal),
-                             poses_[point.bodyB].anchorNow(point.anchorB, -point.normal));
+  const Vec2 normal = normalNow(point);
+  return contactPointBetween(poses_[point.bodyA].anchorNow(point.anchorA, normal),
+                             poses_[point.bodyB].anchorNow(point.anchorB, -normal));
 }
 
 // The other point of the manifold of states_[index], or −1 for a one-point manifold. prepare
@@ -685,15 +697,16 @@ void MicroCollisionSolver::resolvePoint(const StepContext& context, int index, i
   Pose& a = poses_[point.bodyA];
   Pose& b = poses_[point.bodyB];
   const Vec2 at = contactPointNow(point);
+  const Vec2 normal = normalNow(point);
   const Vec2 armA = at - a.position;
   const Vec2 armB = at - b.position;
-  const double torqueArmA = cross(armA, point.normal);
-  const double torqueArmB = cross(armB, point.normal);
+  const double torqueArmA = cross(armA, normal);
+  const double torqueArmB = cross(armB, normal);
   const double inertiaAtContact = a.inverseMass + a.inverseInertia * torqueArmA * torqueArmA +
                                   b.inverseMass + b.inverseInertia * torqueArmB * torqueArmB;
   const double penetration = point.penetration;
-  moveBody(a, armA, -point.normal, penetration, inertiaAtContact);
-  moveBody(b, armB, point.normal, penetration, inertiaAtContact);
+  moveBody(a, armA, -normal, penetration, inertiaAtContact);
+  moveBody(b, armB, normal, penetration, inertiaAtContact);
   afterMove(context, point);
   context.report({SolverEvent::Phase::Position, iteration, states_[index].manifold,
                   states_[index].point, penetration, 0.0, 0.0});

@@ -28,7 +28,7 @@ struct Correction {
 };
 
 /// A manifold's point at the bodies' current poses: where it is (contactPointBetween the surface
-/// anchors, anchorNow) and how deep (as currentPenetration), from one placing of each anchor.
+/// anchors) and how deep (as currentPenetration), from one transform of each anchor.
 struct CurrentPoint {
   Vec2 where;
   double penetration;
@@ -36,8 +36,8 @@ struct CurrentPoint {
 
 CurrentPoint currentPoint(const Body& a, const Body& b, const Manifold& manifold, int index) {
   const ContactPoint& point = manifold.points[static_cast<size_t>(index)];
-  const Vec2 anchorA = anchorNow(a, point.anchorA, manifold.normal);
-  const Vec2 anchorB = anchorNow(b, point.anchorB, -manifold.normal);
+  const Vec2 anchorA = a.toWorld(point.anchorA);
+  const Vec2 anchorB = b.toWorld(point.anchorB);
   return {contactPointBetween(anchorA, anchorB), (anchorA - anchorB).dot(manifold.normal)};
 }
 

@@ -132,16 +132,11 @@ void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, in
 
 // ---- where a contact is now ----
 
-/// Where a contact's anchor on `body` is at its current pose, in world coordinates. A polygon's
-/// anchor turns with it. A circle's surface under the contact is the same however the circle
-/// turns, so its anchor is its centre plus its radius along `outward` (the manifold's normal on
-/// A, the reverse on B), where the collision put it: it follows the centre alone. Turned with the
-/// circle, the anchor of a disc rolling at ω rises r(1 − cos ωt) off the contact within the step
-/// (9 mm for r = 0.25 m at 16 rad/s and 60 Hz) and a 5 mm overlap reads as a gap. Box2D 2.4's
-/// position solver keeps a circle's centre for the same reason.
-inline Vec2 anchorNow(const Body& body, const Vec2& anchor, const Vec2& outward) {
-  if (surfaceTurnsWithShape(body.shape)) return body.toWorld(anchor);
-  return body.position + body.shape.radius * outward;
+/// The direction from `from` to `to`, or `found` where the two coincide.
+inline Vec2 directionOr(const Vec2& from, const Vec2& to, const Vec2& found) {
+  const Vec2 d = to - from;
+  const double length = d.norm();
+  return length > 0.0 ? Vec2(d / length) : found;
 }
 
 /// The penetration of a manifold's point at the bodies' current poses: the anchor on A minus the
@@ -149,9 +144,7 @@ inline Vec2 anchorNow(const Body& body, const Vec2& anchor, const Vec2& outward)
 inline double currentPenetration(const Body& a, const Body& b, const Manifold& manifold,
                                  int point) {
   const ContactPoint& contact = manifold.points[static_cast<size_t>(point)];
-  return (anchorNow(a, contact.anchorA, manifold.normal) -
-          anchorNow(b, contact.anchorB, -manifold.normal))
-      .dot(manifold.normal);
+  return (a.toWorld(contact.anchorA) - b.toWorld(contact.anchorB)).dot(manifold.normal);
 }
 
 // ---- targets and friction ----
