@@ -560,10 +560,15 @@ void MicroCollisionSolver::loadPoses(const StepContext& context) {
   poses_.resize(context.bodies.size());
   for (size_t i = 0; i < context.bodies.size(); ++i) {
     const Body& body = context.bodies[i];
-    const double roundRadius = surfaceTurnsWithShape(body.shape) ? 0.0 : body.shape.radius;
-    poses_[i] = {body.position,    body.angle,          body.rotation(0, 0), body.rotation(1, 0),
-                 body.inverseMass, body.inverseInertia, !body.isStatic(),    false,
-                 roundRadius};
+    poses_[i] = {body.position,
+                 body.angle,
+                 body.rotation(0, 0),
+                 body.rotation(1, 0),
+                 body.inverseMass,
+                 body.inverseInertia,
+                 !body.isStatic(),
+                 false,
+                 !surfaceTurnsWithShape(body.shape)};
   }
 }
 
@@ -588,7 +593,7 @@ void MicroCollisionSolver::storePose(const StepContext& context, int body) {
 Vec2 MicroCollisionSolver::normalNow(const MovePoint& point) const {
   const Pose& a = poses_[point.bodyA];
   const Pose& b = poses_[point.bodyB];
-  return a.round() && b.round() ? directionOr(a.position, b.position, point.normal) : point.normal;
+  return a.round && b.round ? directionOr(a.position, b.position, point.normal) : point.normal;
 }
 
 // A point's penetration at the poses now: the anchor on A minus the anchor on B, along the normal

@@ -38,18 +38,18 @@ class MicroCollisionSolver : public ContactSolver {
     double inverseInertia = 0.0;
     bool movable = false;  ///< not static
     bool moved = false;    ///< since the body last got its pose
-    /// m. A circle's radius, 0 for a shape whose surface turns with it (surfaceTurnsWithShape).
-    double roundRadius = 0.0;
+    /// A circle (its surface does not turn with it, surfaceTurnsWithShape). One line of cache
+    /// holds a pose: a circle's radius is the length of its contact anchors, not stored.
+    bool round = false;
     Vec2 toWorld(const Vec2& local) const { return position + rotate(cosine, sine, local); }
-    bool round() const { return roundRadius > 0.0; }
     /// A contact's anchor on this body now. A polygon's turns with it. A circle's surface under
     /// the contact is the same however the circle turns, so its anchor is its centre plus its
-    /// radius along `outward` (the normal now on A, its reverse on B), as Box2D 2.4's position
-    /// solver keeps a circle's centre. Turned with the circle, the anchor of a disc rolling at ω
-    /// rises r(1 − cos ω dt) off the contact within the step (9 mm for r = 0.25 m at 16 rad/s
-    /// and 60 Hz), and the overlap of a landing reads as a gap.
+    /// radius (the anchor's length) along `outward` (the normal now on A, its reverse on B), as
+    /// Box2D 2.4's position solver keeps a circle's centre. Turned with the circle, the anchor of
+    /// a disc rolling at ω rises r(1 − cos ω dt) off the contact within the step (9 mm for
+    /// r = 0.25 m at 16 rad/s and 60 Hz), and the overlap of a landing reads as a gap.
     Vec2 anchorNow(const Vec2& anchor, const Vec2& outward) const {
-      return round() ? Vec2(position + roundRadius * outward) : toWorld(anchor);
+      return round ? Vec2(position + anchor.norm() * outward) : toWorld(anchor);
     }
     void turnBy(double turn) {
       angle += turn;
