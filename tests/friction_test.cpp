@@ -330,8 +330,10 @@ TEST_CASE("a pushed box carries the box on it below F = 2 μ m g and slides from
 // Dynamic friction between two moving bodies until it turns static: a box thrown along a long
 // board lying on frictionless ground drags the board with it until both move at the velocity
 // momentum leaves them, v = m₁v₀ / (m₁ + m₂). Friction μ m₁ g decelerates the box and accelerates
-// the board, so the box slips v₀² m₂ / (2 μ g (m₁ + m₂)) along the board first. The discrete stop
-// can add up to a step's slip, v₀ dt.
+// the board, so the box slips v₀² m₂ / (2 μ g (m₁ + m₂)) along the board first. Semi-implicit
+// Euler, slowing the slip by a dt a step and moving with the slowed speed, slips v₀ dt / 2 less
+// than that (measured −0.48 to −0.50 v₀ dt; soft step's substeps −0.12 to +0.25), so within a
+// step's slip, v₀ dt. Once the slip stops they move together to within micro's velocity epsilon.
 TEST_CASE("a box thrown along a free board slides to their common velocity m1 v0 / (m1 + m2)",
           "[friction][dynamic][momentum]") {
   const double g = lecture::kGravity;
@@ -365,10 +367,11 @@ TEST_CASE("a box thrown along a free board slides to their common velocity m1 v0
                       << boxNow.velocity.x() << " m/s, board " << boardNow.velocity.x()
                       << " m/s (analytic " << common << "), slipped " << slipped << " m (analytic "
                       << slip << ")");
-          CHECK(boxNow.velocity.x() == Approx(common).epsilon(0.01));
-          CHECK(boardNow.velocity.x() == Approx(common).epsilon(0.01));
+          const double velocityEpsilon = MicroCollisionSettings{}.velocityEpsilon;
+          CHECK(std::abs(boxNow.velocity.x() - common) < velocityEpsilon);
+          CHECK(std::abs(boardNow.velocity.x() - common) < velocityEpsilon);
           CHECK(momentum == Approx(m1 * v0).epsilon(1e-9));
-          CHECK(std::abs(slipped - slip) < 0.03 * slip + v0 * dt);
+          CHECK(std::abs(slipped - slip) < v0 * dt);
         }
       }
     }
@@ -378,9 +381,12 @@ TEST_CASE("a box thrown along a free board slides to their common velocity m1 v0
 // A disc rolling down a slope onto flat ground: where the slope meets the ground it touches both,
 // the ground stops its fall (e = 0) and friction its slip, both through the new contact point,
 // so its angular momentum about that point is kept: m r v cos θ + I v / r = (m r + I / r) v′, and
-// for a disc (I = m r² / 2) it rolls on at v′ = v (1 + 2 cos θ) / 3. It lands up to a step's fall
-// into the ground, and turns fast (16 rad/s for r = 0.25 m from 3 m of 30°): micro's penetration
-// phase must lift it out although the point of its rim that touched has turned away (anchorNow).
+// for a disc (I = m r² / 2) it rolls on at v′ = v (1 + 2 cos θ) / 3, v its speed in the last step
+// before the ground pushes. The landing falls within the next step, in which the slope may add up
+// to (2/3) g sin θ dt (measured: at most a quarter of that). It lands up to a step's fall into
+// the ground, and turns fast (16 rad/s for r = 0.25 m from 3 m of 30°): micro's penetration phase
+// must lift it out to its position epsilon although the point of its rim that touched has turned
+// away (Pose::anchorNow).
 TEST_CASE("a disc rolling off a slope onto flat ground rolls on at v (1 + 2 cos θ) / 3",
           "[friction][rolling][landing]") {
   for (const std::string solver : {"micro", "sequential", "reference"}) {
@@ -397,13 +403,16 @@ TEST_CASE("a disc rolling off a slope onto flat ground rolls on at v (1 + 2 cos 
           disc.position += 3.0 * Vec2(-std::cos(angle), std::sin(angle));  // 3 m up the slope
           scene.bodies.push_back(disc);
           auto world = buildWorld(scene);
-          const auto touchesFlat = [&world] {
+          const auto touchesFlat = [&world] {  // the flat ground pushes the disc
             for (const Manifold& manifold : world->manifolds()) {
-              if (manifold.bodyA == 1 || manifold.bodyB == 1) return true;
+              if (manifold.bodyA != 1 && manifold.bodyB != 1) continue;
+              for (int p = 0; p < manifold.pointCount; ++p) {
+                if (manifold.points[p].normalImpulse > 0.0) return true;
+              }
             }
             return false;
           };
-          double before = 0.0;  // m/s, the disc's speed in its last step on the slope alone
+          double before = 0.0;  // m/s, the disc's speed before the ground pushes
           while (!touchesFlat() && world->stepCount() * dt < 5.0) {
             before = world->bodies()[2].velocity.norm();
             world->step();
@@ -416,10 +425,11 @@ TEST_CASE("a disc rolling off a slope onto flat ground rolls on at v (1 + 2 cos 
                       << ": " << before << " m/s before, " << after.velocity.x()
                       << " m/s a second later (analytic " << expected << "), centre "
                       << after.position.y() << " m above the ground");
-          CHECK(after.velocity.x() == Approx(expected).epsilon(0.01));
-          CHECK(std::abs(after.velocity.y()) < 1e-6);
-          if (solver == "micro") {  // lifted out to its position_epsilon, 1e-4 m
-            CHECK(after.position.y() > radius - 2e-4);
+          const double landingStepGain = 2.0 / 3.0 * lecture::kGravity * std::sin(angle) * dt;
+          CHECK(std::abs(after.velocity.x() - expected) < landingStepGain);
+          CHECK(std::abs(after.velocity.y()) < MicroCollisionSettings{}.velocityEpsilon);
+          if (solver == "micro") {
+            CHECK(after.position.y() > radius - MicroCollisionSettings{}.positionEpsilon);
           }
         }
       }

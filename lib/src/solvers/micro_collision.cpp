@@ -596,13 +596,20 @@ Vec2 MicroCollisionSolver::normalNow(const MovePoint& point) const {
   return a.round && b.round ? directionOr(a.position, b.position, point.normal) : point.normal;
 }
 
+// A point's anchors on A and on B at the poses now, given its normal now (a circle's anchor
+// follows its centre alone, Pose::anchorNow).
+std::array<Vec2, 2> MicroCollisionSolver::anchorsNow(const MovePoint& point,
+                                                     const Vec2& normal) const {
+  return {poses_[point.bodyA].anchorNow(point.anchorA, normal),
+          poses_[point.bodyB].anchorNow(point.anchorB, -normal)};
+}
+
 // A point's penetration at the poses now: the anchor on A minus the anchor on B, along the normal
-// now (a circle's anchor follows its centre alone, anchorNow).
+// now.
 double MicroCollisionSolver::penetrationNow(const MovePoint& point) const {
   const Vec2 normal = normalNow(point);
-  return (poses_[point.bodyA].anchorNow(point.anchorA, normal) -
-          poses_[point.bodyB].anchorNow(point.anchorB, -normal))
-      .dot(normal);
+  const std::array<Vec2, 2> anchors = anchorsNow(point, normal);
+  return (anchors[0] - anchors[1]).dot(normal);
 }
 
 int MicroCollisionSolver::worstPenetration() {
@@ -618,11 +625,11 @@ void MicroCollisionSolver::resolvePenetration(const StepContext& context, int in
   resolvePoint(context, index, iteration);
 }
 
-// The contact point now: contactPointBetween (contact.h) the anchors at the current poses.
-Vec2 MicroCollisionSolver::contactPointNow(const MovePoint& point) const {
-  const Vec2 normal = normalNow(point);
-  return contactPointBetween(poses_[point.bodyA].anchorNow(point.anchorA, normal),
-                             poses_[point.bodyB].anchorNow(point.anchorB, -normal));
+// The contact point now: contactPointBetween (contact.h) the anchors at the current poses, given
+// the point's normal now (normalNow).
+Vec2 MicroCollisionSolver::contactPointNow(const MovePoint& point, const Vec2& normal) const {
+  const std::array<Vec2, 2> anchors = anchorsNow(point, normal);
+  return contactPointBetween(anchors[0], anchors[1]);
 }
 
 // The other point of the manifold of states_[index], or −1 for a one-point manifold. prepare
@@ -652,7 +659,7 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
   std::array<double, 2> torqueArmA{};
   std::array<double, 2> torqueArmB{};
   for (int i = 0; i < 2; ++i) {
-    const Vec2 point = contactPointNow(*points[i]);
+    const Vec2 point = contactPointNow(*points[i], normal);
     torqueArmA[i] = cross(Vec2(point - a.position), normal);
     torqueArmB[i] = cross(Vec2(point - b.position), normal);
   }
@@ -701,8 +708,8 @@ void MicroCollisionSolver::resolvePoint(const StepContext& context, int index, i
   const MovePoint& point = movePoints_[index];
   Pose& a = poses_[point.bodyA];
   Pose& b = poses_[point.bodyB];
-  const Vec2 at = contactPointNow(point);
   const Vec2 normal = normalNow(point);
+  const Vec2 at = contactPointNow(point, normal);
   const Vec2 armA = at - a.position;
   const Vec2 armB = at - b.position;
   const double torqueArmA = cross(armA, normal);

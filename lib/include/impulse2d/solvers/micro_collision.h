@@ -5,6 +5,7 @@
 // points resolved together (pair impulses, pair moves).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -141,11 +142,12 @@ class MicroCollisionSolver : public ContactSolver {
   int otherPoint(int index) const;
   void afterMove(const StepContext& context, const MovePoint& point);
   bool resolvePair(const StepContext& context, int index, int partner, int iteration);
-  Vec2 contactPointNow(const MovePoint& point) const;
+  Vec2 contactPointNow(const MovePoint& point, const Vec2& normal) const;
   void loadPoses(const StepContext& context);
   void storePoses(const StepContext& context);
   void storePose(const StepContext& context, int body);
   Vec2 normalNow(const MovePoint& point) const;
+  std::array<Vec2, 2> anchorsNow(const MovePoint& point, const Vec2& normal) const;
   double penetrationNow(const MovePoint& point) const;
   void moveBody(Pose& body, const Vec2& arm, const Vec2& direction, double penetration,
                 double totalInertia) const;
