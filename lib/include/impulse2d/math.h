@@ -48,6 +48,13 @@ inline Mat2 inverseOrZero(const Mat2& m, double tiny) {
   return inverse / det;
 }
 
+/// The direction from `from` to `to`, or `fallback` where the two coincide.
+inline Vec2 directionOr(const Vec2& from, const Vec2& to, const Vec2& fallback) {
+  const Vec2 d = to - from;
+  const double length = d.norm();
+  return length > 0.0 ? Vec2(d / length) : fallback;
+}
+
 /// An axis-aligned bounding box.
 struct Aabb {
   Vec2 lower = Vec2::Zero();

@@ -132,13 +132,6 @@ void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, in
 
 // ---- where a contact is now ----
 
-/// The direction from `from` to `to`, or `found` where the two coincide.
-inline Vec2 directionOr(const Vec2& from, const Vec2& to, const Vec2& found) {
-  const Vec2 d = to - from;
-  const double length = d.norm();
-  return length > 0.0 ? Vec2(d / length) : found;
-}
-
 /// The penetration of a manifold's point at the bodies' current poses: the anchor on A minus the
 /// anchor on B, along the normal (> 0 overlap).
 inline double currentPenetration(const Body& a, const Body& b, const Manifold& manifold,
