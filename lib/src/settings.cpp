@@ -147,6 +147,7 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"round_surfaces", &s.roundSurfaces},
           {"recycle_distance", &s.recycleDistance},
           {"recycle_largest_turn", &s.recycleLargestTurn},
+          {"recycle_within_found_distance", &s.recycleWithinFoundDistance},
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
           {"pair_restitution", &s.pairRestitution.enabled},

@@ -146,8 +146,9 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   ++statistics_.narrowPhasePairs;
   manifold.bodyA = pair.first;
   manifold.bodyB = pair.second;
-  if (collide(a, b, contactDistance(a, b, h), manifold) == 0) return false;
-  manifold.found = {a.angle, b.angle, a.toLocal(b.position)};
+  const double distance = contactDistance(a, b, h);
+  if (collide(a, b, distance, manifold) == 0) return false;
+  manifold.found = {a.angle, b.angle, a.toLocal(b.position), distance};
   manifold.friction = mixFriction(a.friction, b.friction);
   manifold.restitution = mixRestitution(a.restitution, b.restitution);
   return true;
@@ -159,7 +160,8 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
 // farther-reaching dynamic body's largest extent), the manifold is kept with its normal, ids,
 // impulses and arms as found; only each point's overlap follows how far the bodies moved since,
 // the arms turned with them (a circle's not, with roundSurfaces), as a soft step's substeps
-// measure it.
+// measure it. Within the found distance, no point of B has moved as far as the distance the
+// manifold was found within, so a feature that was not in it cannot have reached A's surface.
 bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
   const ContactRecycling limits = solver_->contactRecycling();
   if (limits.distance <= 0.0 || old.pointCount == 0) return false;
@@ -172,7 +174,9 @@ bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
       std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
   const double moved = (a.toLocal(b.position) - old.found.relativePosition).norm() +
                        reach * std::abs(std::sin(turnB - turnA));
-  if (moved >= limits.distance) return false;
+  const double tolerance =
+      limits.withinFoundDistance ? std::min(limits.distance, old.found.distance) : limits.distance;
+  if (moved >= tolerance) return false;
   manifold = old;
   const auto armTurn = [&limits](const Body& body, double turn) {
     return !limits.roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : 0.0;

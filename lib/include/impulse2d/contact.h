@@ -82,6 +82,7 @@ struct FoundPose {
   double angleA = 0.0;                   ///< rad
   double angleB = 0.0;                   ///< rad
   Vec2 relativePosition = Vec2::Zero();  ///< m: B's centre in A's body frame
+  double distance = 0.0;                 ///< m: the contact distance the points were found within
 };
 
 struct Manifold {

@@ -69,6 +69,9 @@ struct ContactRecycling {
   double largestTurn = 0.0;  ///< rad
   /// A circle's overlap follows its centre alone, its arm not turned (SoftStepSettings).
   bool roundSurfaces = false;
+  /// Kept only while the bodies moved less than the contact distance the manifold was found
+  /// within as well (SoftStepSettings::recycleWithinFoundDistance).
+  bool withinFoundDistance = false;
 };
 
 class ContactSolver {

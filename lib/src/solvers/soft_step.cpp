@@ -36,7 +36,8 @@ Softness loadedSoftness(double hertz, double dampingRatio, double h, double load
 
 ContactRecycling SoftStepSolver::contactRecycling() const {
   if (!settings_.contactRecycling) return {};
-  return {settings_.recycleDistance, settings_.recycleLargestTurn, settings_.roundSurfaces};
+  return {settings_.recycleDistance, settings_.recycleLargestTurn, settings_.roundSurfaces,
+          settings_.recycleWithinFoundDistance};
 }
 
 void SoftStepSolver::solveVelocities(const StepContext& context) {
