@@ -75,7 +75,8 @@ TEST_CASE(
       "resting_box",   "pushed_box",     "jitter",           "bouncing_ball",
       "incline_holds", "incline_slides", "incline_friction", "rolling_disk",
       "spinning_disk", "stack",          "pyramid",          "cradle",
-      "soft_step",     "heavy_on_light", "tipping",          "cradle_two"};
+      "soft_step",     "heavy_on_light", "tipping",          "cradle_two",
+      "ladder"};
   expected.insert(kBenchmarkScenes.begin(), kBenchmarkScenes.end());
   std::set<std::string> found;
   for (const auto& entry :
@@ -195,6 +196,29 @@ TEST_CASE("tipping: below tan θ = w/h the box stands, above it the box falls on
   CHECK(bodyNamed(*world, "stands").angle == Approx(definitionNamed(scene, "ramp12").angle));
   const double turned = bodyNamed(*world, "tips").angle - definitionNamed(scene, "ramp16").angle;
   CHECK(std::abs(turned) == Approx(std::acos(-1.0) / 2.0).margin(0.01));
+}
+
+TEST_CASE("ladder: above μ = d / h the ladder stands, below it the foot slides out",
+          "[scenes][ladder]") {
+  const Scene scene = shippedScene("ladder");
+  // d / h for a plank at its angle, foot corner on the floor and top corner on the wall.
+  const auto holdingFriction = [&](const std::string& name) {
+    const BodyDef& plank = definitionNamed(scene, name);
+    const Vec2 corner = plank.shape.vertices.front().cwiseAbs();  // (L/2, t/2)
+    return 0.5 / std::tan(plank.angle) - corner.y() / (2.0 * corner.x());
+  };
+  const double holds = mixFriction(definitionNamed(scene, "floor_holds").friction,
+                                   definitionNamed(scene, "holds").friction);
+  const double slides = mixFriction(definitionNamed(scene, "floor_slides").friction,
+                                    definitionNamed(scene, "slides").friction);
+  REQUIRE(holds > holdingFriction("holds"));
+  REQUIRE(slides < holdingFriction("slides"));
+  auto world = buildWorld(scene);
+  const Vec2 start = bodyNamed(*world, "holds").position;
+  const double angle = bodyNamed(*world, "slides").angle;
+  runToEnd(*world, scene);
+  CHECK((bodyNamed(*world, "holds").position - start).norm() < 1e-3);
+  CHECK(bodyNamed(*world, "slides").angle < angle - 1.0);  // fell from 60° to lying nearly flat
 }
 
 // The strikers are the balls that move at the start, all at the same speed.
