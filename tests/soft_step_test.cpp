@@ -379,28 +379,45 @@ TEST_CASE(
                 .margin(1e-12));
     }
     // Moved 1 cm: past the 5 mm the manifold was found within, not past v3's recycle distance
-    // of 5 cm. Found anew only within the found distance.
+    // of 5 cm. A two-point manifold keeps v3's distance (its box's other corners are a quarter
+    // turn away), so it is recycled by either rule.
     box.position.x() += 0.01;
     box.updateCache();
     world->findContacts();
-    CHECK(world->lastStepStatistics().recycledManifolds == (withinFoundDistance ? 0 : 1));
+    CHECK(world->lastStepStatistics().recycledManifolds == 1);
     // Moved 6 cm more, past the recycle distance: found anew either way.
     box.position.x() += 0.06;
     box.updateCache();
     world->findContacts();
     CHECK(world->lastStepStatistics().recycledManifolds == 0);
   }
+  // A one-point manifold (a disc on the ground) moved 1 cm: found anew within the found distance,
+  // recycled on v3's rule.
+  for (const bool withinFoundDistance : {false, true}) {
+    Scene scene = groundScene("soft_step", 0.6);
+    scene.solverSettings.softStep.recycleWithinFoundDistance = withinFoundDistance;
+    BodyDef disc = lecture::diskOnSlope(0.5, 0.0, 0.6);
+    scene.bodies.push_back(disc);
+    auto world = buildWorld(scene);
+    world->findContacts();
+    REQUIRE(world->manifolds().at(0).pointCount == 1);
+    Body& moved = world->bodies()[1];
+    moved.position.x() += 0.01;
+    moved.updateCache();
+    world->findContacts();
+    CHECK(world->lastStepStatistics().recycledManifolds == (withinFoundDistance ? 0 : 1));
+  }
 }
 
 // A regular pentagon rolling over its vertices (μ 1, started pivoting about its front vertex fast
-// enough to pass over it): the manifold found as it starts to pivot holds that vertex alone, and
+// enough to pass over it): once its manifold is found mid-pivot it holds that vertex alone, and
 // the next vertex is found only when the manifold is found anew. On v3's recycle distance alone
 // the pentagon turns until its far vertex has moved 5 cm, and the next vertex lands up to 2.4 cm
 // deep, unseen, without an impulse (240 Hz). Recycled only while the pentagon moved less than the
-// distance its manifold was found within, no vertex can reach the ground unseen, and every contact
-// stays within the static sag of a contact spring of contact_hertz under the pentagon's weight,
-// g/ω² for ω = 2π·contact_hertz (2.8e-4 m; the ground's springs are twice as stiff, and the
-// deepest contact measured 6.6e-5 m).
+// distance a one-point manifold was found within, no vertex reaches the ground unseen, and every
+// contact stays within the static sag of a contact spring of contact_hertz under the pentagon's
+// weight, g/ω² for ω = 2π·contact_hertz (2.8e-4 m; the ground's springs are twice as stiff, and the
+// deepest contact measured 1.6e-4 m).
 TEST_CASE("a rolling pentagon's next vertex is found before it reaches the ground",
           "[soft_step][recycling][landing]") {
   const double radius = 0.5;  // m, to the vertices
@@ -464,9 +481,8 @@ TEST_CASE(
     }
     return farthest;
   };
-  // Stands: the top stays within a fifth of a box of the axis (it sways 1.2 cm at most in these
-  // 10 s, 0.11 m on v3's recycle distance alone, Box2D v3 3.4 cm). Falls: the top ends up more
-  // than a box width off the axis.
+  // Stands: the top stays within a fifth of a box of the axis (it sways 0.11 m at most in these
+  // 10 s, Box2D v3 3.4 cm). Falls: the top ends up more than a box width off the axis.
   constexpr double kStands = 0.2;  // m
   constexpr double kFalls = 1.0;   // m
   scene.solverSettings.softStep.blockNormals.enabled = true;

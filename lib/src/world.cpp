@@ -47,6 +47,18 @@ void fallAsleep(Body& body) {
   body.torque = 0.0;
 }
 
+// How far B may move before its manifold is found anew. Within the found distance a one-point
+// manifold (a vertex or a circle on a face) is found anew before any point of B has moved as far
+// as the distance it was found within, so a vertex that was not in it, such as the next vertex of
+// a polygon pivoting on one, cannot have reached A's surface unseen. A two-point manifold holds
+// both ends of an edge on the face: another vertex of that polygon reaches the face only by
+// turning through an exterior angle (at least 45°, at the 8 vertices a polygon may have), far
+// beyond the largest turn, so it keeps v3's recycle distance.
+double recycleDistance(const ContactRecycling& limits, const Manifold& old) {
+  if (!limits.withinFoundDistance || old.pointCount == 2) return limits.distance;
+  return std::min(limits.distance, old.found.distance);
+}
+
 }  // namespace
 
 World::World(const WorldSettings& settings, std::unique_ptr<ContactSolver> solver)
@@ -160,8 +172,7 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
 // farther-reaching dynamic body's largest extent), the manifold is kept with its normal, ids,
 // impulses and arms as found; only each point's overlap follows how far the bodies moved since,
 // the arms turned with them (a circle's not, with roundSurfaces), as a soft step's substeps
-// measure it. Within the found distance, no point of B has moved as far as the distance the
-// manifold was found within, so a feature that was not in it cannot have reached A's surface.
+// measure it.
 bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
   const ContactRecycling limits = solver_->contactRecycling();
   if (limits.distance <= 0.0 || old.pointCount == 0) return false;
@@ -174,9 +185,7 @@ bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
       std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
   const double moved = (a.toLocal(b.position) - old.found.relativePosition).norm() +
                        reach * std::abs(std::sin(turnB - turnA));
-  const double tolerance =
-      limits.withinFoundDistance ? std::min(limits.distance, old.found.distance) : limits.distance;
-  if (moved >= tolerance) return false;
+  if (moved >= recycleDistance(limits, old)) return false;
   manifold = old;
   const auto armTurn = [&limits](const Body& body, double turn) {
     return !limits.roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : 0.0;

@@ -442,13 +442,13 @@ struct SoftStepSettings {
   /// rad. A manifold is also found anew once either body has turned this far since it was found
   /// (Box2D v3: cosine above 0.98, about 11.5°).
   double recycleLargestTurn = 0.2;
-  /// Recycle within the found distance, ours beyond Box2D v3: a manifold is also found anew once
-  /// the bodies have moved (as recycleDistance counts it) as far as the contact distance its
-  /// points were found within (the margin, plus the speculative reach), so a vertex that was not
-  /// in it cannot reach the surface unseen. Off: v3's recycleDistance alone, and a pentagon
-  /// rolling on its vertices turns up to 5 cm at its far vertex on its old one-point manifold:
-  /// its next vertex lands up to 2.4 cm deep (240 Hz; 6.6e-5 m with it on). A resting stack
-  /// moves far less than the margin and keeps its manifolds either way (docs/soft-step.md).
+  /// Recycle within the found distance, ours beyond Box2D v3: a one-point manifold (a vertex or
+  /// a circle on a face) is also found anew once the bodies have moved, as recycleDistance counts
+  /// it, as far as the contact distance it was found within (the margin plus the speculative
+  /// reach), so the next vertex of a polygon pivoting on one cannot reach the surface unseen. A
+  /// two-point manifold keeps recycleDistance: its polygon's other vertices are an exterior angle
+  /// (45° or more) of turning away. Off: v3's recycleDistance for all, and a pentagon rolling over
+  /// its vertices lands its next vertex up to 2.4 cm deep (240 Hz; 3.4e-4 m with it on).
   bool recycleWithinFoundDistance = true;
   /// After the substeps, one pass that makes a closing contact separate at −e times its closing
   /// speed before the step (Box2D v3's b2ApplyRestitution). Off: soft contacts do not bounce.

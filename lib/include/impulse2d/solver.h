@@ -69,8 +69,8 @@ struct ContactRecycling {
   double largestTurn = 0.0;  ///< rad
   /// A circle's overlap follows its centre alone, its arm not turned (SoftStepSettings).
   bool roundSurfaces = false;
-  /// Kept only while the bodies moved less than the contact distance the manifold was found
-  /// within as well (SoftStepSettings::recycleWithinFoundDistance).
+  /// A one-point manifold is kept only while the bodies moved less than the contact distance it
+  /// was found within as well (SoftStepSettings::recycleWithinFoundDistance).
   bool withinFoundDistance = false;
 };
 
