@@ -3,7 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <string>
 
 #include "lecture_scenes.h"
 
@@ -126,4 +128,46 @@ TEST_CASE("a resting box keeps its contact feature ids from step to step", "[res
     CHECK(manifold.points[1].id == first[1].id);
   }
   CHECK(first[0].id != first[1].id);
+}
+
+// A disc in a frictionless V of two walls rising at θ either side: two contacts on one body, and
+// with no friction the forces are determined: by symmetry both walls push alike, and their
+// vertical parts carry the weight, 2 N cos θ = m g. Placed touching both walls, and dropped
+// 0.2 m into them.
+TEST_CASE("a disc in a frictionless V rests with each wall pushing m g / (2 cos θ)",
+          "[resting][contact]") {
+  const double radius = 0.5;
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double degrees : {20.0, 45.0, 70.0}) {
+      for (const double lift : {0.0, 0.2}) {
+        const double angle = degrees * 3.14159265358979323846 / 180.0;
+        Scene scene = lecture::sceneWith(solver, kDt);
+        for (const double side : {-1.0, 1.0}) {  // walls whose top faces meet at the origin
+          BodyDef wall = lecture::ground(0.0, side * angle);
+          wall.position += side * 20.0 * Vec2(std::cos(angle), side * std::sin(angle));
+          scene.bodies.push_back(wall);
+        }
+        BodyDef disc = lecture::diskOnSlope(radius, 0.0, 0.0);
+        disc.position = Vec2(0.0, radius / std::cos(angle) + lift);
+        scene.bodies.push_back(disc);
+        auto world = buildWorld(scene);
+        while (world->stepCount() * kDt < 3.0) world->step();
+        double push[2] = {0.0, 0.0};
+        for (const Manifold& manifold : world->manifolds()) {
+          const int wall = std::min(manifold.bodyA, manifold.bodyB);
+          for (int i = 0; i < manifold.pointCount; ++i) {
+            push[wall] += manifold.points[size_t(i)].normalImpulse / kDt;
+          }
+        }
+        const double weight = lecture::kGravity / world->bodies()[2].inverseMass;
+        const double expected = weight / (2.0 * std::cos(angle));
+        INFO(solver << ", " << degrees << "°, dropped " << lift << " m: walls push " << push[0]
+                    << " and " << push[1] << " N (analytic " << expected << "), disc at x "
+                    << world->bodies()[2].position.x());
+        CHECK(push[0] == Approx(expected).epsilon(0.02));  // as the stacks are held (measured
+        CHECK(push[1] == Approx(expected).epsilon(0.02));  // within 0.1 %)
+        CHECK(std::abs(world->bodies()[2].position.x()) < 1e-3);
+      }
+    }
+  }
 }
