@@ -5,6 +5,7 @@
 
 #include <iostream>
 
+#include "exact_motion.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/scene/scene_file.h"
 #include "lecture_scenes.h"
@@ -144,28 +145,17 @@ Scene pushedTallBox(const std::string& solver, double dt, const Vec2& size, doub
 }
 
 /// rad after `seconds` from rest: the box turning clockwise about its front bottom corner, which
-/// stays put, under the push (its point turning with the box) and its weight (RK4, 0.1 ms steps).
+/// stays put, under the push (its point turning with the box) and its weight.
 double tippedAngle(const Vec2& size, double force, double height, double seconds) {
   const double mass = size.x() * size.y();
   const double aboutCorner = mass * (size.squaredNorm() / 12.0 + size.squaredNorm() / 4.0);
-  const auto acceleration = [&](double angle) {
+  const auto acceleration = [&](double angle, double) {
     const Mat2 turn = rotation(angle);
     const Vec2 pushedPoint = turn * Vec2(-size.x(), height);  // from the corner
     const Vec2 centre = turn * Vec2(-0.5 * size.x(), 0.5 * size.y());
     return (-pushedPoint.y() * force - centre.x() * mass * lecture::kGravity) / aboutCorner;
   };
-  double angle = 0.0;
-  double spin = 0.0;
-  const double h = 1e-4;
-  for (int i = 0; i < int(std::lround(seconds / h)); ++i) {
-    const double k1a = spin, k1s = acceleration(angle);
-    const double k2a = spin + 0.5 * h * k1s, k2s = acceleration(angle + 0.5 * h * k1a);
-    const double k3a = spin + 0.5 * h * k2s, k3s = acceleration(angle + 0.5 * h * k2a);
-    const double k4a = spin + h * k3s, k4s = acceleration(angle + h * k3a);
-    angle += h / 6.0 * (k1a + 2.0 * k2a + 2.0 * k3a + k4a);
-    spin += h / 6.0 * (k1s + 2.0 * k2s + 2.0 * k3s + k4s);
-  }
-  return angle;
+  return exact::turnAfter({0.0, 0.0}, seconds, 1e-4, acceleration).angle;
 }
 
 }  // namespace

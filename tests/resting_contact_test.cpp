@@ -8,6 +8,7 @@
 #include <string>
 
 #include "lecture_scenes.h"
+#include "solver_scenes.h"
 
 using namespace impulse2d;
 
@@ -152,13 +153,8 @@ TEST_CASE("a disc in a frictionless V rests with each wall pushing m g / (2 cos 
         scene.bodies.push_back(disc);
         auto world = buildWorld(scene);
         while (world->stepCount() * kDt < 3.0) world->step();
-        double push[2] = {0.0, 0.0};
-        for (const Manifold& manifold : world->manifolds()) {
-          const int wall = std::min(manifold.bodyA, manifold.bodyB);
-          for (int i = 0; i < manifold.pointCount; ++i) {
-            push[wall] += manifold.points[size_t(i)].normalImpulse / kDt;
-          }
-        }
+        const double push[2] = {solvers::contactForce(*world, 2, 0),
+                                solvers::contactForce(*world, 2, 1)};
         const double weight = lecture::kGravity / world->bodies()[2].inverseMass;
         const double expected = weight / (2.0 * std::cos(angle));
         INFO(solver << ", " << degrees << "°, dropped " << lift << " m: walls push " << push[0]

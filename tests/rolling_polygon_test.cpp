@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <string>
-#include <vector>
 
 #include "lecture_scenes.h"
 
@@ -22,30 +21,13 @@ constexpr double kRadius = 0.5;  // m, to the vertices
 constexpr double kFriction = 1.0;
 
 /// A regular polygon of `sides` lying on a face on the ground, pivoting clockwise about its
-/// front vertex at `spin` times the spin that just carries its centre over that vertex.
+/// front corner at `spin` times the spin that just carries its centre over that corner.
 Scene rollingPolygonScene(const std::string& solver, double dt, int sides, double spin) {
   Scene scene = lecture::sceneWith(solver, dt);
   scene.bodies.push_back(lecture::ground(kFriction));
-  const double half = kPi / sides;  // half the angle a side spans at the centre
-  std::vector<Vec2> vertices;
-  for (int k = 0; k < sides; ++k) {
-    const double at = -0.5 * kPi + half + 2.0 * half * k;
-    vertices.push_back(kRadius * Vec2(std::cos(at), std::sin(at)));
-  }
-  BodyDef polygon;
-  polygon.name = "polygon";
-  polygon.shape = makePolygon(vertices).shape;
-  polygon.friction = kFriction;
-  polygon.position = Vec2(0.0, kRadius * std::cos(half));
-  const MassProperties mass = computeMass(polygon.shape, polygon.density);
-  const double aboutVertex = mass.inertia + mass.mass * kRadius * kRadius;
-  // Energy to lift the centre from R cos(π/n) to R over the vertex.
-  const double overTheTop = std::sqrt(2.0 * mass.mass * lecture::kGravity * kRadius *
-                                      (1.0 - std::cos(half)) / aboutVertex);
-  const double omega = spin * overTheTop;
-  polygon.angularVelocity = -omega;
-  polygon.velocity =
-      omega * kRadius * Vec2(std::cos(half), std::sin(half));  // ω × (centre − vertex)
+  BodyDef polygon = lecture::polygonOnSlope(sides, kRadius, 0.0, kFriction);
+  const double overTheTop = lecture::spinOverCorner(polygon, sides, kRadius, lecture::kGravity);
+  lecture::pivotAboutFrontCorner(polygon, sides, kRadius, spin * overTheTop);
   scene.bodies.push_back(polygon);
   return scene;
 }
@@ -94,8 +76,9 @@ Landing firstLanding(World& world, int sides) {
 
 // Gravity also turns the polygon during the landing's steps, by up to m g R dt / (I + m R²) a
 // step about either vertex: that, over the steps the landing took, is the tolerance (measured at
-// most 0.54 of it). It is wide at 60 Hz (a fifth of the spin) and sharp at 960 Hz (2 % of it). Soft step's springs spread a landing over steps and give part of it back
-// (docs/soft-step.md); it is not held to the rigid ratio.
+// most 0.54 of it). It is wide at 60 Hz (a fifth of the spin) and sharp at 960 Hz (2 % of it). Soft
+// step's springs spread a landing over steps and give part of it back (docs/soft-step.md); it is
+// not held to the rigid ratio.
 TEST_CASE("a polygon rolling over a vertex keeps (I + m R² cos(2π/n)) / (I + m R²) of its spin",
           "[rolling][impact][friction]") {
   for (const std::string solver : {"micro", "sequential", "reference"}) {

@@ -32,27 +32,11 @@ double degrees(double d) {
   return d * kPi / 180.0;
 }
 
-/// A regular pentagon lying on one edge of `ground(…, angle)`: its centroid an apothem
-/// R·cos 36° (plus `lift`) above the surface.
-BodyDef pentagonOnSlope(double angle, double friction, double lift) {
-  std::vector<Vec2> vertices;
-  for (int k = 0; k < 5; ++k) {
-    const double at = degrees(-126.0 + 72.0 * k);
-    vertices.emplace_back(kPentagonRadius * std::cos(at), kPentagonRadius * std::sin(at));
-  }
-  BodyDef def;
-  def.name = "pentagon";
-  def.shape = makePolygon(vertices).shape;
-  def.angle = angle;
-  const Vec2 normal(-std::sin(angle), std::cos(angle));
-  def.position = (kPentagonRadius * std::cos(degrees(36.0)) + lift) * normal;
-  def.friction = friction;
-  return def;
-}
-
 BodyDef bodyOnSlope(const std::string& shape, double angle, double friction, double lift) {
   if (shape == "box") return lecture::boxOnSlope(Vec2(1.0, 1.0), angle, friction, lift);
-  return pentagonOnSlope(angle, friction, lift);
+  BodyDef pentagon = lecture::polygonOnSlope(5, kPentagonRadius, angle, friction, lift);
+  pentagon.name = "pentagon";
+  return pentagon;
 }
 
 struct SlopeRun {

@@ -51,9 +51,10 @@ void fallAsleep(Body& body) {
 // manifold (a vertex or a circle on a face) is found anew before any point of B has moved as far
 // as the distance it was found within, so a vertex that was not in it, such as the next vertex of
 // a polygon pivoting on one, cannot have reached A's surface unseen. A two-point manifold holds
-// both ends of an edge on the face: another vertex of that polygon reaches the face only by
-// turning through an exterior angle (at least 45°, at the 8 vertices a polygon may have), far
-// beyond the largest turn, so it keeps v3's recycle distance.
+// both ends of an edge on the face: the next vertex of that polygon reaches the face only by
+// turning through the exterior angle there (72° for a regular pentagon, 45° for an octagon),
+// beyond the largest turn (11.5°) that finds it anew, so it keeps v3's recycle distance. Only a
+// corner flatter than the largest turn, on an irregular polygon, could still land unseen.
 double recycleDistance(const ContactRecycling& limits, const Manifold& old) {
   if (!limits.withinFoundDistance || old.pointCount == 2) return limits.distance;
   return std::min(limits.distance, old.found.distance);

@@ -446,9 +446,10 @@ struct SoftStepSettings {
   /// a circle on a face) is also found anew once the bodies have moved, as recycleDistance counts
   /// it, as far as the contact distance it was found within (the margin plus the speculative
   /// reach), so the next vertex of a polygon pivoting on one cannot reach the surface unseen. A
-  /// two-point manifold keeps recycleDistance: its polygon's other vertices are an exterior angle
-  /// (45° or more) of turning away. Off: v3's recycleDistance for all, and a pentagon rolling over
-  /// its vertices lands its next vertex up to 2.4 cm deep (240 Hz; 3.4e-4 m with it on).
+  /// two-point manifold keeps recycleDistance: its polygon's next vertex is an exterior angle of
+  /// turning away (45° for a regular octagon), beyond recycleLargestTurn. Off: v3's
+  /// recycleDistance for all, and a pentagon rolling over its vertices lands its next vertex up to
+  /// 2.4 cm deep (240 Hz; 3.4e-4 m with it on).
   bool recycleWithinFoundDistance = true;
   /// After the substeps, one pass that makes a closing contact separate at −e times its closing
   /// speed before the step (Box2D v3's b2ApplyRestitution). Off: soft contacts do not bounce.
