@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "exact_motion.h"
 #include "lecture_scenes.h"
 
 using namespace impulse2d;
@@ -67,6 +68,87 @@ TEST_CASE("a tall box on a slope stands while tan θ < w / h and tips over beyon
         const TippingRun tips = runTipping(solver, size, beyond, lift);
         INFO(beyond * 180.0 / kPi << " deg: turned " << tips.finalTurn << " rad");
         CHECK(std::abs(tips.finalTurn) == Approx(kPi / 2.0).margin(0.01));  // on its side
+      }
+    }
+  }
+}
+
+namespace {
+
+constexpr double kPlankLength = 2.0;
+constexpr double kPlankThickness = 0.1;
+
+/// A static ledge whose top is y = 0 and whose right edge is x = 0, and a plank lying on it at
+/// rest with its centre `overhang` beyond the edge (negative: over the ledge), friction μ = 1.
+Scene plankOverLedge(const std::string& solver, double dt, double overhang) {
+  Scene scene = lecture::sceneWith(solver, dt);
+  BodyDef ledge;
+  ledge.name = "ledge";
+  ledge.type = BodyType::Static;
+  ledge.shape = makeBox(4.0, 1.0);
+  ledge.position = Vec2(-2.0, -0.5);
+  ledge.friction = kFriction;
+  scene.bodies.push_back(ledge);
+  BodyDef plank;
+  plank.name = "plank";
+  plank.shape = makeBox(kPlankLength, kPlankThickness);
+  plank.position = Vec2(overhang, 0.5 * kPlankThickness);
+  plank.friction = kFriction;
+  scene.bodies.push_back(plank);
+  return scene;
+}
+
+/// rad, clockwise, after `seconds` from rest: the plank turning about the ledge's edge, which
+/// stays put under it: (I + m r²) θ'' = m g (d cos θ + (t / 2) sin θ), r the centre's distance
+/// from the edge.
+double tippedOverEdge(double overhang, double seconds) {
+  const double mass = kPlankLength * kPlankThickness;
+  const Vec2 centre(overhang, 0.5 * kPlankThickness);  // from the edge
+  const double aboutEdge =
+      mass * (kPlankLength * kPlankLength + kPlankThickness * kPlankThickness) / 12.0 +
+      mass * centre.squaredNorm();
+  const auto acceleration = [&](double angle, double) {
+    return mass * lecture::kGravity *
+           (centre.x() * std::cos(angle) + centre.y() * std::sin(angle)) / aboutEdge;
+  };
+  return exact::turnAfter({0.0, 0.0}, seconds, 1e-4, acceleration).angle;
+}
+
+}  // namespace
+
+// A plank over the edge of a ledge: while the vertical through its centre falls on the ledge it
+// lies still; once the centre is beyond the edge by d it turns about the edge, starting at
+// θ'' = m g d / (I + m r²). Placed at rest with d from −0.5 to 0.6 m. Still: moved less than half
+// of what creeping at micro's velocity epsilon (1e-4 m/s) would cover in 3 s. Tipping: the angle
+// after 0.1 and 0.2 s equals the exact rigid turn within the integrator's lag, its spin times
+// its step (at most 2 θ / t times dt, or soft step's substep). Measured: micro, sequential
+// impulses and the reference lie exactly on semi-implicit Euler's answer ((n + 1) / n of the exact
+// angle after n steps), soft step within its substeps' lag; still planks moved < 1e-13 m (soft
+// step 8.4e-5 m).
+TEST_CASE("a plank over a ledge lies still with its centre over it, and tips about the edge beyond",
+          "[tipping]") {
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    for (const double dt : {1.0 / 60.0, 1.0 / 240.0}) {
+      const int substeps = solver == "soft_step" ? SoftStepSettings{}.substeps : 1;
+      for (const double overhang : {-0.5, -0.1, -0.02}) {
+        auto world = buildWorld(plankOverLedge(solver, dt, overhang));
+        const Vec2 start = world->bodies()[1].position;
+        while (world->stepCount() * dt < 3.0) world->step();
+        const double moved = (world->bodies()[1].position - start).norm();
+        INFO(solver << ", dt " << dt << ", centre " << overhang << " m beyond the edge: moved "
+                    << moved << " m");
+        CHECK(moved < 0.5 * 1e-4 * 3.0);
+      }
+      for (const double overhang : {0.1, 0.3, 0.6}) {
+        auto world = buildWorld(plankOverLedge(solver, dt, overhang));
+        for (const double seconds : {0.1, 0.2}) {
+          while (world->stepCount() < std::lround(seconds / dt)) world->step();
+          const double turned = -world->bodies()[1].angle;
+          const double exact = tippedOverEdge(overhang, seconds);
+          INFO(solver << ", dt " << dt << ", centre " << overhang << " m beyond the edge, after "
+                      << seconds << " s: turned " << turned << " rad (exact " << exact << ")");
+          CHECK(turned == Approx(exact).margin(2.0 * exact / seconds * dt / substeps));
+        }
       }
     }
   }

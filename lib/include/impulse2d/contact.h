@@ -60,6 +60,11 @@ struct ContactPoint {
   double normalImpulse = 0.0;
   /// N s. Total friction impulse along the tangent this step.
   double tangentImpulse = 0.0;
+  /// N s. Soft step only: the impulses its last substep held, which warm start every substep of
+  /// the next step (Box2D v3's `normalImpulse`; the totals above are v3's `totalNormalImpulse`).
+  /// They differ in a step with an impact, whose impulse the first substep spends.
+  double substepNormalImpulse = 0.0;
+  double substepTangentImpulse = 0.0;
   FrictionState friction = FrictionState::None;
   /// The micro-collision resolver gave this point a bounce this step. Carried to the next step
   /// by feature id, so the bounce is not warm-started as if it were resting weight.

@@ -81,11 +81,11 @@ void SoftStepSolver::prepareBodies(const StepContext& context, double h) {
 // manifold's stay as they were, unturned: the Jacobians are fixed across steps as they are
 // across substeps), the normal and tangent masses,
 // the separation base, the closing velocity for restitution, and the impulses to warm start
-// from (the manifold keeps the impulse over the step; a substep's is that over the substeps).
+// from (the last substep's of the last step, which the manifold keeps beside the step's totals).
 void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
   const double hertz =
       std::min(settings_.contactHertz, settings_.maxHertzPerSubstepRate * inverseSubstep_);
-  const double warm = settings_.warmStarting ? 1.0 / settings_.substeps : 0.0;
+  const double warm = settings_.warmStarting ? 1.0 : 0.0;
   constraints_.resize(context.manifolds.size());
   for (size_t m = 0; m < context.manifolds.size(); ++m) {
     const Manifold& manifold = context.manifolds[m];
@@ -125,8 +125,8 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
       cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
       cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
       cp.softness = pointSoftness(pairHertz, h, point, cp.normalMass);
-      cp.normalImpulse = warm * point.normalImpulse;
-      cp.tangentImpulse = warm * point.tangentImpulse;
+      cp.normalImpulse = warm * point.substepNormalImpulse;
+      cp.tangentImpulse = warm * point.substepTangentImpulse;
       cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
     }
   }
@@ -134,13 +134,13 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
 
 // The spring of a point (the rigid limit without soft contacts). With loadScaledStiffness, a
 // point that carried more than its effective mass at loadAcceleration last step gets the spring
-// of the mass it carried: the manifold keeps the step's impulse, so its load is that over dt.
+// of the mass it carried: its load is the last substep's impulse over the substep.
 Softness SoftStepSolver::pointSoftness(double hertz, double h, const ContactPoint& point,
                                        double normalMass) const {
   if (!settings_.softContacts) return rigidSoftness(h);
   double loadRatio = 1.0;
   if (settings_.loadScaledStiffness && normalMass > 0.0) {
-    const double load = point.normalImpulse / (h * settings_.substeps);
+    const double load = point.substepNormalImpulse / h;
     loadRatio = std::max(1.0, load / (normalMass * settings_.loadAcceleration));
   }
   return loadedSoftness(hertz, settings_.dampingRatio, h, loadRatio);
@@ -167,6 +167,7 @@ void SoftStepSolver::warmStart() {
         continue;
       }
       cp.totalNormalImpulse += cp.normalImpulse;
+      cp.totalTangentImpulse += cp.tangentImpulse;
       applyPairImpulse(a, b, cp.armA, cp.armB,
                        cp.normalImpulse * constraint.normal + cp.tangentImpulse * tangent);
     }
@@ -287,6 +288,7 @@ void SoftStepSolver::solveFriction(Constraint& constraint, SolverBody& a, Solver
     const double total = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
     const double change = total - cp.tangentImpulse;
     cp.tangentImpulse = total;
+    cp.totalTangentImpulse += change;
     applyPairImpulse(a, b, cp.armA, cp.armB, change * tangent);
   }
 }
@@ -361,16 +363,19 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
   return true;
 }
 
-// The manifold keeps the impulse over the whole step (the last substep's times the substeps),
-// as every method reports it, and the friction state of each point.
+// The manifold keeps the impulses applied over the whole step (warm starts, solves and bounces
+// summed), as every method reports them, the last substep's to warm start the next step from,
+// and the friction state of each point.
 void SoftStepSolver::storeImpulses(const StepContext& context) const {
   for (const Constraint& constraint : constraints_) {
     Manifold& manifold = context.manifolds[size_t(constraint.manifold)];
     for (int i = 0; i < constraint.pointCount; ++i) {
       const ConstraintPoint& cp = constraint.points[size_t(i)];
       ContactPoint& point = manifold.points[size_t(i)];
-      point.normalImpulse = cp.normalImpulse * settings_.substeps;
-      point.tangentImpulse = cp.tangentImpulse * settings_.substeps;
+      point.normalImpulse = cp.totalNormalImpulse;
+      point.tangentImpulse = cp.totalTangentImpulse;
+      point.substepNormalImpulse = cp.normalImpulse;
+      point.substepTangentImpulse = cp.tangentImpulse;
       point.friction = frictionStateOf(cp.normalImpulse, cp.tangentImpulse, manifold.friction, 0.0);
     }
   }

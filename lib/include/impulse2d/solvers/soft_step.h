@@ -78,9 +78,10 @@ class SoftStepSolver : public ContactSolver {
     double tangentMass = 0.0;
     double normalImpulse = 0.0;
     double tangentImpulse = 0.0;
-    double totalNormalImpulse = 0.0;  ///< all normal impulse applied this step: did it touch?
-    double relativeVelocity = 0.0;    ///< vn before the step, for restitution
-    Softness softness;                ///< this point's spring, sized by the load it carried
+    double totalNormalImpulse = 0.0;   ///< all normal impulse applied this step: did it touch?
+    double totalTangentImpulse = 0.0;  ///< all friction impulse applied this step
+    double relativeVelocity = 0.0;     ///< vn before the step, for restitution
+    Softness softness;                 ///< this point's spring, sized by the load it carried
   };
   struct Constraint {
     int manifold = 0;
