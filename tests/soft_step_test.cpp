@@ -407,6 +407,31 @@ TEST_CASE(
     world->findContacts();
     CHECK(world->lastStepStatistics().recycledManifolds == (withinFoundDistance ? 0 : 1));
   }
+  // A disc on a box's corner, its normal running from the corner to its centre, moved 1 mm
+  // (within every distance): found anew, since its normal has turned by 1 mm / r; kept on v3's
+  // rule. The same disc on the box's face keeps its normal, and its manifold, however it moves.
+  for (const bool roundNormals : {false, true}) {
+    for (const double along : {0.0, 0.5}) {  // above the face's middle, above its right corner
+      Scene scene = groundScene("soft_step", 0.6);
+      scene.solverSettings.softStep.recycleRoundNormals = roundNormals;
+      scene.bodies[0].shape = makeBox(1.0, 1.0);
+      scene.bodies[0].position = Vec2(0.0, -0.5);
+      BodyDef disc = lecture::diskOnSlope(0.5, 0.0, 0.6);
+      disc.position.x() = along;
+      scene.bodies.push_back(disc);
+      auto world = buildWorld(scene);
+      world->findContacts();
+      REQUIRE(world->manifolds().at(0).pointCount == 1);
+      Body& moved = world->bodies()[1];
+      moved.position.x() += 0.001;
+      moved.updateCache();
+      world->findContacts();
+      const bool onCorner = along > 0.0;
+      INFO((onCorner ? "on the corner" : "on the face")
+           << ", round normals recycled: " << roundNormals);
+      CHECK(world->lastStepStatistics().recycledManifolds == (onCorner && !roundNormals ? 0 : 1));
+    }
+  }
 }
 
 // A regular pentagon rolling over its vertices (μ 1, started pivoting about its front vertex fast

@@ -264,6 +264,15 @@ int collidePolygons(const Body& a, const Body& b, double margin, Manifold& manif
 
 }  // namespace
 
+bool normalRunsToCentre(const Shape& a, const Shape& b, const Manifold& manifold) {
+  const bool circleA = a.type == ShapeType::Circle;
+  const bool circleB = b.type == ShapeType::Circle;
+  if (circleA && circleB) return true;
+  if (circleA == circleB || manifold.pointCount != 1) return false;
+  const FeatureId vertex = circleRegionId(0, CircleRegion::Vertex) >> 16;
+  return manifold.points[0].id >> 16 == vertex;
+}
+
 int collide(const Body& a, const Body& b, double margin, Manifold& manifold) {
   const bool circleA = a.shape.type == ShapeType::Circle;
   const bool circleB = b.shape.type == ShapeType::Circle;

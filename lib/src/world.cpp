@@ -181,6 +181,7 @@ bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
   if (limits.distance <= 0.0 || old.pointCount == 0) return false;
   const Body& a = bodies_[size_t(old.bodyA)];
   const Body& b = bodies_[size_t(old.bodyB)];
+  if (!limits.roundNormals && normalRunsToCentre(a.shape, b.shape, old)) return false;
   const double turnA = a.angle - old.found.angleA;
   const double turnB = b.angle - old.found.angleB;
   if (std::abs(turnA) > limits.largestTurn || std::abs(turnB) > limits.largestTurn) return false;

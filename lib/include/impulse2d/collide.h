@@ -12,6 +12,11 @@ namespace impulse2d {
 /// margin (penetration > −margin). Returns pointCount; 0 when they do not touch.
 int collide(const Body& a, const Body& b, double margin, Manifold& manifold);
 
+/// Whether the manifold collide(a, b, …) found has a normal that runs to a circle's centre from
+/// the other circle's centre or from a polygon's vertex: such a normal turns as the bodies move
+/// past each other, where a face's normal only turns with its body.
+bool normalRunsToCentre(const Shape& a, const Shape& b, const Manifold& manifold);
+
 /// m. Between two polygons, B's face becomes the reference face only when it separates them by
 /// more than A's face plus this much, so a box resting flat keeps the same reference face every
 /// step instead of flip-flopping on round-off (Box2D: 0.1 × its linear slop of 0.005 m). Within

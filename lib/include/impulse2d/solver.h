@@ -72,6 +72,9 @@ struct ContactRecycling {
   /// A one-point manifold is kept only while the bodies moved less than the contact distance it
   /// was found within as well (SoftStepSettings::recycleWithinFoundDistance).
   bool withinFoundDistance = false;
+  /// A manifold whose normal runs to a circle's centre (normalRunsToCentre) is kept too
+  /// (SoftStepSettings::recycleRoundNormals); false: it is found anew every step.
+  bool roundNormals = true;
 };
 
 class ContactSolver {
