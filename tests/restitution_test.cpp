@@ -179,7 +179,9 @@ TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-
   std::cout << "figure: flat box, e = 0.8, micro without pair bounces: spin " << pointByPoint.spin
             << " rad/s, apex " << pointByPoint.apex << " m (e^2 h = 0.64)\n";
   CHECK(std::abs(pointByPoint.spin) > 1.0);
-  const FirstBounce v3 = flatBoxBounce("soft_step", 0.8, 0.5, {"solver.pair_restitution=false"});
+  const FirstBounce v3 =
+      flatBoxBounce("soft_step", 0.8, 0.5,
+                    {"solver.pair_restitution=false", "solver.friction_in_restitution=false"});
   std::cout << "figure: flat box, e = 0.8, soft step without pair restitution: spin " << v3.spin
             << " rad/s, apex " << v3.apex << " m (e^2 h = 0.64)\n";
   CHECK(v3.apex < 0.6 * 0.64);  // 0.34 m, spinning; 0.63 m with pair restitution
@@ -584,13 +586,14 @@ TEST_CASE("a box landing flat on a slope while sliding bounces straight off it w
 // m (1 + e) vn reverses its fall, and friction acts on the slip of its lowest point, which it
 // stops if it can. Stopping it takes the tangential impulse m vt / 3 (for a disc, 1/m + r²/I =
 // 3/m), leaving the disc rolling at (2/3) vt; if that is more than μ m (1 + e) vn, the slip is cut
-// by μ (1 + e) vn and the disc spins up to 2 μ (1 + e) vn / r. Soft step's restitution pass
-// (Box2D v3's) applies no friction, so its friction is held to μ vn (docs/soft-step.md).
+// by μ (1 + e) vn and the disc spins up to 2 μ (1 + e) vn / r. Soft step solves friction once
+// more after its bounce (friction_in_restitution); Box2D v3's restitution pass applies none,
+// which holds friction to μ vn (docs/soft-step.md).
 TEST_CASE("a disc bouncing obliquely leaves rolling, or with its slip cut by μ (1 + e) vn",
           "[restitution][friction]") {
   const double radius = 0.5;
   const Vec2 thrown(2.0, -3.0);
-  for (const std::string solver : {"micro", "sequential", "reference"}) {
+  for (const std::string solver : {"micro", "sequential", "reference", "soft_step"}) {
     for (const double restitution : {0.5, 1.0}) {
       for (const double friction : {0.1, 0.6}) {  // 0.1 cannot stop the slip, 0.6 can
         for (const double dt : {1.0 / 60.0, 1.0 / 240.0}) {

@@ -148,6 +148,7 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"recycle_distance", &s.recycleDistance},
           {"recycle_largest_turn", &s.recycleLargestTurn},
           {"recycle_within_found_distance", &s.recycleWithinFoundDistance},
+          {"friction_in_restitution", &s.frictionInRestitution},
           {"recycle_round_normals", &s.recycleRoundNormals},
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},

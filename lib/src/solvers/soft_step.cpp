@@ -14,6 +14,19 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+/// How far along the normal a contact found `separation` apart moves from the middle of the gap
+/// to where the surfaces will touch, when one or both are circles (roundSurfaces): a circle
+/// touches a polygon at its own surface, and two circles where the line of centres divides as
+/// their radii. Zero for two polygons, whose touching point the gap does not tell.
+Vec2 towardsTouchingPoint(const Shape& a, const Shape& b, double separation, const Vec2& normal) {
+  const bool circleA = a.type == ShapeType::Circle;
+  const bool circleB = b.type == ShapeType::Circle;
+  if (!circleA && !circleB) return Vec2::Zero();
+  const double shareOfA =
+      circleA && circleB ? a.radius / (a.radius + b.radius) : (circleB ? 1.0 : 0.0);
+  return separation * (shareOfA - 0.5) * normal;
+}
+
 }  // namespace
 
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
@@ -111,8 +124,12 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     for (int i = 0; i < manifold.pointCount; ++i) {
       const ContactPoint& point = manifold.points[size_t(i)];
       ConstraintPoint& cp = constraint.points[size_t(i)];
-      cp.armA = point.foundArmA;
-      cp.armB = point.foundArmB;
+      const Vec2 shift =
+          settings_.roundSurfaces
+              ? towardsTouchingPoint(bodyA.shape, bodyB.shape, -point.foundPenetration, normal)
+              : Vec2::Zero();
+      cp.armA = point.foundArmA + shift;
+      cp.armB = point.foundArmB + shift;
       cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(normal);
       const auto inverseMass = [&](const Vec2& d) {
         const double rA = cross(cp.armA, d);
@@ -318,25 +335,39 @@ bool SoftStepSolver::bounces(const ConstraintPoint& cp) const {
 
 // A contact that bounces is made to separate at −e times its closing speed before the step: a
 // two-point manifold whose points both bounce as one block (pairRestitution), otherwise point by
-// point as Box2D v3 does.
+// point as Box2D v3 does. With frictionInRestitution its friction is then solved once more, now
+// bounded with the bounce's impulse in the normal one, and the bounce again, since at a corner,
+// or at a face's two corners carrying unequal loads, friction also changes the normal velocities.
 void SoftStepSolver::applyRestitution() {
   for (Constraint& constraint : constraints_) {
     if (constraint.restitution == 0.0) continue;
     SolverBody& a = bodies_[size_t(constraint.bodyA)];
     SolverBody& b = bodies_[size_t(constraint.bodyB)];
-    if (applyPairRestitution(constraint, a, b)) continue;
-    for (int i = 0; i < constraint.pointCount; ++i) {
-      ConstraintPoint& cp = constraint.points[size_t(i)];
-      if (!bounces(cp)) continue;
-      const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(constraint.normal);
-      const double impulse = -cp.normalMass * (vn + constraint.restitution * cp.relativeVelocity);
-      const double total = std::max(cp.normalImpulse + impulse, 0.0);
-      const double change = total - cp.normalImpulse;
-      cp.normalImpulse = total;
-      cp.totalNormalImpulse += change;
-      applyPairImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
-    }
+    const bool bounced =
+        applyPairRestitution(constraint, a, b) || applyPointRestitution(constraint, a, b);
+    if (!bounced || !settings_.frictionInRestitution) continue;
+    solveFriction(constraint, a, b);
+    if (!applyPairRestitution(constraint, a, b)) applyPointRestitution(constraint, a, b);
   }
+}
+
+// Each point that bounces, one after the other. Returns whether any did.
+bool SoftStepSolver::applyPointRestitution(Constraint& constraint, SolverBody& a,
+                                           SolverBody& b) const {
+  bool bounced = false;
+  for (int i = 0; i < constraint.pointCount; ++i) {
+    ConstraintPoint& cp = constraint.points[size_t(i)];
+    if (!bounces(cp)) continue;
+    bounced = true;
+    const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(constraint.normal);
+    const double impulse = -cp.normalMass * (vn + constraint.restitution * cp.relativeVelocity);
+    const double total = std::max(cp.normalImpulse + impulse, 0.0);
+    const double change = total - cp.normalImpulse;
+    cp.normalImpulse = total;
+    cp.totalNormalImpulse += change;
+    applyPairImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
+  }
+  return bounced;
 }
 
 // Both points of a two-point manifold that both bounce: the accumulated normal impulses x ≥ 0 that

@@ -121,6 +121,7 @@ class SoftStepSolver : public ContactSolver {
   void applyRestitution();
   bool bounces(const ConstraintPoint& cp) const;
   bool applyPairRestitution(Constraint& constraint, SolverBody& a, SolverBody& b) const;
+  bool applyPointRestitution(Constraint& constraint, SolverBody& a, SolverBody& b) const;
   void storeImpulses(const StepContext& context) const;
   void finishBodies(const StepContext& context, double h) const;
 
