@@ -208,3 +208,74 @@ TEST_CASE("past the cap only while progressing: no progress, no impulse past the
   CHECK(stalled.report.iterations ==
         scene.solverSettings.micro.velocityIterationsPerContact * stalled.points);
 }
+
+namespace {
+
+/// J. The kinetic energy of the two bodies' motion relative to their centre of mass.
+double internalEnergy(const World& world) {
+  double mass = 0.0;
+  double energy = 0.0;
+  Vec2 momentum = Vec2::Zero();
+  for (const Body& body : world.bodies()) {
+    mass += body.mass;
+    momentum += body.mass * body.velocity;
+    energy += 0.5 * body.mass * body.velocity.squaredNorm() +
+              0.5 * body.inertia * body.angularVelocity * body.angularVelocity;
+  }
+  return energy - 0.5 * momentum.squaredNorm() / mass;
+}
+
+}  // namespace
+
+// A face striking a face with a bounce (e 1) and friction (μ 1): a spinning hexagon meets a
+// spinning triangle face to face, two points (a case a probe of 4,000 random impacts found). Once
+// the pair has bounced, both points separate at their bounce, and the slip left at one point is
+// stopped by friction alone: a bounce is never taken back, and a point that separates faster than
+// its bounce asks nothing along the normal. Stopping the slip while holding that point's normal
+// velocity instead pushed it, and the two points, each stopping the slip the other's impulse left,
+// pushed each other apart for the whole step: +67 % of the impact's energy. The reference loses
+// 26.6 %; micro must not keep more than 2 % of the energy above it (measured 0.9 % below).
+TEST_CASE("micro: friction after a bounce does not push a face's two points apart",
+          "[micro][restitution][friction]") {
+  const auto hexagon = [](double radius) {
+    std::vector<Vec2> vertices;
+    for (int i = 0; i < 6; ++i) {
+      const double at = 2.0 * 3.14159265358979323846 * i / 6.0;
+      vertices.emplace_back(radius * std::cos(at), radius * std::sin(at));
+    }
+    return makePolygon(vertices).shape;
+  };
+  const auto energyAfter = [&](const std::string& solver, double& before) {
+    Scene scene = lecture::sceneWith(solver, 1.0 / 60.0);
+    scene.world.gravity = Vec2::Zero();
+    BodyDef a;
+    a.shape = hexagon(0.35052007114536826);
+    a.position = Vec2(-0.39069206817212843, -0.72982047385780435);
+    a.angle = 4.2590005991130466;
+    a.velocity = Vec2(1.7273201263840721, 2.8760234527331168);
+    a.angularVelocity = -0.55458511777735175;
+    a.restitution = 1.0;
+    a.friction = 1.0;
+    BodyDef b = a;
+    b.shape = makePolygon({Vec2(0.42626262458128111, 0.16001336925988693),
+                           Vec2(-0.58568796625308961, 0.021511399631585014),
+                           Vec2(0.15942534167180838, -0.18152476889147198)})
+                  .shape;
+    b.density = 4.5008759980735196;
+    b.position = Vec2(0.098418380021199681, 0.21082121161961487);
+    b.angle = 6.2774570965615855;
+    b.velocity = Vec2(-0.074023237840026512, -0.21646577142698897);
+    b.angularVelocity = 1.903670478178273;
+    scene.bodies = {a, b};
+    auto world = buildWorld(scene);
+    before = internalEnergy(*world);
+    while (world->stepCount() < 40) world->step();  // they meet in step 11 and part
+    return internalEnergy(*world);
+  };
+  double before = 0.0;
+  const double micro = energyAfter("micro", before);
+  const double exact = energyAfter("reference", before);
+  INFO("energy " << before << " J before, after: micro " << micro << ", reference " << exact);
+  CHECK(exact < before);
+  CHECK(micro < exact + 0.02 * before);
+}

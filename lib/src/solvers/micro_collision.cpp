@@ -361,6 +361,9 @@ int MicroCollisionSolver::worstVelocityPoint() {
 Vec2 MicroCollisionSolver::newTotalImpulse(const PointState& state, const Vec2& before,
                                            double friction, const Vec2& desiredChange,
                                            FrictionState& frictionState) const {
+  if (separatesPastItsBounce(state)) {
+    return frictionAlone(state, before, friction, desiredChange, frictionState);
+  }
   const Mat2& matrix = state.contactMatrix;
   const double frictionlessNormal =
       std::max(0.0, normalPart(before) + normalPart(desiredChange) /
@@ -385,6 +388,30 @@ Vec2 MicroCollisionSolver::newTotalImpulse(const PointState& state, const Vec2& 
   const double normal = std::max(0.0, normalPart(before) + normalChange);
   frictionState = FrictionState::Dynamic;
   return Vec2(normal, direction * friction * normal);
+}
+
+// A point that has bounced and now separates faster than its bounce asks nothing along the normal,
+// and its bounce is never taken back: friction acts there alone, its normal total left as it is.
+// Holding its normal velocity instead (a normal change of 0) pushes it with whatever normal
+// impulse stopping the slip takes, and two such points of one face, each stopping the slip the
+// other's impulse left, pushed each other apart without end (+67 % energy in an impact).
+bool MicroCollisionSolver::separatesPastItsBounce(const PointState& state) const {
+  return state.bounced && normalPart(state.contactVelocity) >
+                              targetNormalVelocity(state) + settings_.velocityEpsilon;
+}
+
+// The friction total that stops the slip, within μ times the normal total `before`, the normal
+// total unchanged.
+Vec2 MicroCollisionSolver::frictionAlone(const PointState& state, const Vec2& before,
+                                         double friction, const Vec2& desiredChange,
+                                         FrictionState& frictionState) const {
+  const double limit = settings_.friction ? friction * normalPart(before) : 0.0;
+  const double wanted =
+      tangentPart(before) +
+      tangentPart(desiredChange) / state.contactMatrix(ContactAxis::Tangent, ContactAxis::Tangent);
+  frictionState = std::abs(wanted) <= limit ? FrictionState::Static : FrictionState::Dynamic;
+  if (limit <= 0.0) frictionState = FrictionState::None;
+  return Vec2(normalPart(before), std::clamp(wanted, -limit, limit));
 }
 
 // One micro-collision: the impulse that takes the point from its totals to the new ones. Without

@@ -133,6 +133,9 @@ class MicroCollisionSolver : public ContactSolver {
   bool stillProgressing() const;
   Vec2 newTotalImpulse(const PointState& state, const Vec2& before, double friction,
                        const Vec2& desiredChange, FrictionState& frictionState) const;
+  bool separatesPastItsBounce(const PointState& state) const;
+  Vec2 frictionAlone(const PointState& state, const Vec2& before, double friction,
+                     const Vec2& desiredChange, FrictionState& frictionState) const;
   void applyVelocityChange(const StepContext& context, int index, int iteration);
   void refreshContactVelocities(const StepContext& context, int bodyIndex, int refreshedBody);
 
