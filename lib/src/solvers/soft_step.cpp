@@ -17,11 +17,12 @@ constexpr double kPi = 3.14159265358979323846;
 /// How far along the normal a contact found `separation` apart moves from the middle of the gap
 /// to where the surfaces will touch, when one or both are circles (roundSurfaces): a circle
 /// touches a polygon at its own surface, and two circles where the line of centres divides as
-/// their radii. Zero for two polygons, whose touching point the gap does not tell.
+/// their radii. Zero for two polygons, whose touching point the gap does not tell, and for an
+/// overlap, whose middle is where the surfaces are pressed together.
 Vec2 towardsTouchingPoint(const Shape& a, const Shape& b, double separation, const Vec2& normal) {
   const bool circleA = a.type == ShapeType::Circle;
   const bool circleB = b.type == ShapeType::Circle;
-  if (!circleA && !circleB) return Vec2::Zero();
+  if ((!circleA && !circleB) || separation <= 0.0) return Vec2::Zero();
   const double shareOfA =
       circleA && circleB ? a.radius / (a.radius + b.radius) : (circleB ? 1.0 : 0.0);
   return separation * (shareOfA - 0.5) * normal;
