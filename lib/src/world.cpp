@@ -175,7 +175,8 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
 // farther-reaching dynamic body's largest extent), the manifold is kept with its normal, ids,
 // impulses and arms as found; only each point's overlap follows how far the bodies moved since,
 // the arms turned with them (a circle's not, with roundSurfaces), as a soft step's substeps
-// measure it.
+// measure it. A normal that runs to a circle's centre turns as the bodies move past each other,
+// so unless the solver asks to keep such manifolds too (roundNormals, v3) they are found anew.
 bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
   const ContactRecycling limits = solver_->contactRecycling();
   if (limits.distance <= 0.0 || old.pointCount == 0) return false;

@@ -429,11 +429,13 @@ struct SoftStepSettings {
   /// and falls between 6 and 10 s (docs/soft-step.md).
   bool contactRecycling = true;
   /// Round surfaces: within a step a circle's contact moves with the circle's centre alone, since
-  /// its surface under the contact is the same however it turns. Off: every arm turns with its
+  /// its surface under the contact is the same however it turns, and a contact found across a gap
+  /// acts where the circle will touch, not in the middle of the gap. Off: every arm turns with its
   /// body, as Box2D v3's solver takes it for every shape; a circle's arm then lifts off the
   /// surface by r(1 − cos Δθ) as it rolls, the contact reads a gap, and a disc of 0.1 m rolling
-  /// down 30° at 60 Hz (turning 0.5–1.6 rad a step) accelerates 3.2 % below (2/3) g sin θ
-  /// (docs/soft-step.md).
+  /// down 30° at 60 Hz (turning 0.5–1.6 rad a step) accelerates 3.2 % below (2/3) g sin θ; and
+  /// a 5 cm disc glancing off a wall turns about a lever up to half the margin too long (3 % too
+  /// fast along the wall at 15,360 Hz; docs/soft-step.md).
   bool roundSurfaces = true;
   /// m. A manifold is found anew once B has moved this far relative to A since it was found,
   /// counting the turn of the farther-reaching body at its largest extent (Box2D v3: 10 × its
