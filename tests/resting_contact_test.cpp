@@ -244,7 +244,8 @@ TEST_CASE("a plank on two point supports rests on them by the lever rule", "[res
             const double at = layout.box > 0.0 ? world->bodies()[3].position.x() : 0.0;
             const auto [exact1, exact2] =
                 leverForces(layout.x1, layout.x2, plankMass, centre, layout.box, at);
-            const double bound = (plankMass + layout.box) * 1e-4 / dt;
+            const double bound =
+                (plankMass + layout.box) * MicroCollisionSettings{}.velocityEpsilon / dt;
             INFO(solver << ", supports at " << layout.x1 << " and " << layout.x2 << ", box "
                         << layout.box << " kg at " << layout.at << ", μ " << friction
                         << ", dropped " << lift << " m, dt " << dt << ": " << first / samples

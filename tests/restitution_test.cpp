@@ -372,9 +372,10 @@ TEST_CASE("two boxes colliding face-on leave at Newton's velocities without turn
           INFO(solver << ", e " << e << ", m2 / m1 " << ratio << ", μ " << friction << ": v1 " << v1
                       << " (" << expected1 << "), v2 " << v2 << " (" << expected2
                       << ") m/s, turning " << turning << " rad/s");
-          CHECK(v1 == Approx(expected1).margin(1e-4));
-          CHECK(v2 == Approx(expected2).margin(1e-4));
-          CHECK(turning * 0.5 < 1e-4);
+          const double epsilon = MicroCollisionSettings{}.velocityEpsilon;
+          CHECK(v1 == Approx(expected1).margin(epsilon));
+          CHECK(v2 == Approx(expected2).margin(epsilon));
+          CHECK(turning * 0.5 < epsilon);
         }
       }
     }
@@ -442,10 +443,11 @@ TEST_CASE("a disc striking a free box off centre leaves it moving and turning by
                         << "), box " << struck.velocity.x() << " (" << impulse * struck.inverseMass
                         << ") m/s, turning " << struck.angularVelocity << " ("
                         << -impulse * height * struck.inverseInertia << ") rad/s");
-            CHECK(discSpeed == Approx(speed - impulse / ratio).margin(1e-4));
-            CHECK(struck.velocity.x() == Approx(impulse * struck.inverseMass).margin(1e-4));
+            const double epsilon = MicroCollisionSettings{}.velocityEpsilon;
+            CHECK(discSpeed == Approx(speed - impulse / ratio).margin(epsilon));
+            CHECK(struck.velocity.x() == Approx(impulse * struck.inverseMass).margin(epsilon));
             CHECK(struck.angularVelocity * height ==
-                  Approx(-impulse * height * height * struck.inverseInertia).margin(1e-4));
+                  Approx(-impulse * height * height * struck.inverseInertia).margin(epsilon));
           }
         }
       }
@@ -492,7 +494,7 @@ TEST_CASE("a rod landing on its corner turns about it, its angular momentum ther
           INFO(solver << ", " << degrees << "°, μ " << friction << ", dt " << dt << ": turning "
                       << body.angularVelocity << " rad/s (" << expected << ")");
           CHECK(body.angularVelocity * 0.5 * size.x() ==
-                Approx(expected * 0.5 * size.x()).margin(1e-4));
+                Approx(expected * 0.5 * size.x()).margin(MicroCollisionSettings{}.velocityEpsilon));
           if (friction == 0.0) CHECK(std::abs(body.velocity.x()) < 1e-12);
         }
       }

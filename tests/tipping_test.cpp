@@ -137,7 +137,7 @@ TEST_CASE("a plank over a ledge lies still with its centre over it, and tips abo
         const double moved = (world->bodies()[1].position - start).norm();
         INFO(solver << ", dt " << dt << ", centre " << overhang << " m beyond the edge: moved "
                     << moved << " m");
-        CHECK(moved < 0.5 * 1e-4 * 3.0);
+        CHECK(moved < 0.5 * MicroCollisionSettings{}.velocityEpsilon * 3.0);
       }
       for (const double overhang : {0.1, 0.3, 0.6}) {
         auto world = buildWorld(plankOverLedge(solver, dt, overhang));

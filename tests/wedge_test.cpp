@@ -102,7 +102,7 @@ Accelerations measuredAccelerations(World& world, double dt, double angle) {
 // reference).
 TEST_CASE("a block on a free frictionless wedge pushes it back at m g sin θ cos θ / (M + m sin² θ)",
           "[wedge][contact]") {
-  constexpr double kEpsilon = 1e-4;  // m/s, micro's velocityEpsilon
+  const double epsilon = MicroCollisionSettings{}.velocityEpsilon;  // m/s
   for (const std::string solver : {"micro", "sequential", "reference"}) {
     for (const double degrees : {20.0, 30.0, 45.0}) {
       for (const double ratio : {0.2, 1.0, 5.0}) {
@@ -116,7 +116,7 @@ TEST_CASE("a block on a free frictionless wedge pushes it back at m g sin θ cos
             const double m = ratio * kWedgeMass;
             const double share =
                 m * std::sin(angle) / (kWedgeMass + m * std::pow(std::sin(angle), 2));
-            const double bound = 2.0 * kEpsilon * (1.0 + share) / (kLastSample - kFirstSample);
+            const double bound = 2.0 * epsilon * (1.0 + share) / (kLastSample - kFirstSample);
             INFO(solver << ", " << degrees << "°, m / M = " << ratio << ", dropped " << lift
                         << " m, dt " << dt << ": wedge " << measured.wedge << " (exact "
                         << exact.wedge << "), block " << measured.block << " (exact " << exact.block

@@ -24,6 +24,11 @@ FeatureId circleRegionId(int feature, CircleRegion region) {
   return makeFeatureId(feature, static_cast<int>(region));
 }
 
+/// The region a circle's feature id names: its second feature, the high half of makeFeatureId.
+CircleRegion circleRegionOf(FeatureId id) {
+  return static_cast<CircleRegion>(id >> 16);
+}
+
 int nextVertex(const Shape& polygon, int index) {
   return (index + 1) % static_cast<int>(polygon.vertices.size());
 }
@@ -269,8 +274,7 @@ bool normalRunsToCentre(const Shape& a, const Shape& b, const Manifold& manifold
   const bool circleB = b.type == ShapeType::Circle;
   if (circleA && circleB) return true;
   if (circleA == circleB || manifold.pointCount != 1) return false;
-  const FeatureId vertex = circleRegionId(0, CircleRegion::Vertex) >> 16;
-  return manifold.points[0].id >> 16 == vertex;
+  return circleRegionOf(manifold.points[0].id) == CircleRegion::Vertex;
 }
 
 int collide(const Body& a, const Body& b, double margin, Manifold& manifold) {

@@ -99,7 +99,6 @@ void SoftStepSolver::prepareBodies(const StepContext& context, double h) {
 void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
   const double hertz =
       std::min(settings_.contactHertz, settings_.maxHertzPerSubstepRate * inverseSubstep_);
-  const double warm = settings_.warmStarting ? 1.0 : 0.0;
   constraints_.resize(context.manifolds.size());
   for (size_t m = 0; m < context.manifolds.size(); ++m) {
     const Manifold& manifold = context.manifolds[m];
@@ -143,8 +142,8 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
       cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
       cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
       cp.softness = pointSoftness(pairHertz, h, point, cp.normalMass);
-      cp.normalImpulse = warm * point.substepNormalImpulse;
-      cp.tangentImpulse = warm * point.substepTangentImpulse;
+      cp.normalImpulse = settings_.warmStarting ? point.substepNormalImpulse : 0.0;
+      cp.tangentImpulse = settings_.warmStarting ? point.substepTangentImpulse : 0.0;
       cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
     }
   }
