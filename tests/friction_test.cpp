@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <tuple>
 
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/micro_collision.h"
@@ -473,6 +474,97 @@ TEST_CASE("a disc rolling off a slope onto flat ground rolls on at v (1 + 2 cos 
             CHECK(after.position.y() > radius - MicroCollisionSettings{}.positionEpsilon);
           }
         }
+      }
+    }
+  }
+}
+
+namespace {
+
+/// A pile of three discs on a flat ground of friction μ_ground: two of radius `bottom` with a gap
+/// between them and one of radius `top` resting on both, the lines from its centre to theirs at
+/// `alpha` from the vertical, all at rest and exactly touching. The discs' own friction is
+/// `discs`; the ground's is chosen so that a disc on it mixes to `discGround` (√(μA μB)).
+Scene discPyramid(const std::string& solver, double alpha, double bottom, double top, double discs,
+                  double discGround) {
+  Scene scene = lecture::sceneWith(solver, kDt);
+  scene.bodies.push_back(lecture::ground(discGround * discGround / discs));
+  const double reach = bottom + top;
+  for (const double side : {-1.0, 1.0}) {
+    BodyDef disc;
+    disc.shape = makeCircle(bottom);
+    disc.position = Vec2(side * reach * std::sin(alpha), bottom);
+    disc.friction = discs;
+    scene.bodies.push_back(disc);
+  }
+  BodyDef disc;
+  disc.shape = makeCircle(top);
+  disc.position = Vec2(0.0, bottom + reach * std::cos(alpha));
+  disc.friction = discs;
+  scene.bodies.push_back(disc);
+  return scene;
+}
+
+}  // namespace
+
+// Three discs piled as a pyramid, the bottom two apart (the contact lines at α from the vertical).
+// A bottom disc (mass m) is pushed by the top one (mass M) with N along the contact line and f
+// along the tangent, and held by the ground's G and F. Its moments about its centre give f = F;
+// its horizontal forces N sin α = f (1 + cos α), so f = N tan(α/2) whatever the radii; the top
+// disc's vertical forces then give N = M g / 2 (cos α + tan(α/2) sin α = 1), and G = (m + M/2) g.
+// The pile stands iff the discs' friction reaches tan(α/2) and the ground's M tan(α/2) / (2m + M)
+// (tan(α/2) / 3 for equal discs). Below the first the bottom discs roll apart under the top one;
+// below the second they slide apart.
+TEST_CASE(
+    "three discs piled stand iff μ reaches tan(α/2) between them, M tan(α/2) / (2m + M) "
+    "on the ground",
+    "[friction][pile]") {
+  struct Pile {
+    double alpha, bottom, top;
+  };
+  for (const Pile pile : {Pile{degrees(32.0), 0.3, 0.3}, Pile{degrees(40.0), 0.4, 0.4},
+                          Pile{degrees(45.0), 0.5, 0.25}, Pile{degrees(35.0), 0.25, 0.5}}) {
+    const double half = std::tan(0.5 * pile.alpha);
+    const double ratio = pile.top * pile.top / (pile.bottom * pile.bottom);  // M / m
+    const double onGround = ratio * half / (2.0 + ratio);
+    for (const std::string solver : {"micro", "sequential", "reference", "soft_step"}) {
+      // (discs' μ, ground's μ, stands): each at 15 % above or below its threshold, the other 1.
+      for (const auto& [discs, ground, stands] :
+           {std::tuple{1.15 * half, 1.0, true}, std::tuple{1.0, 1.15 * onGround, true},
+            std::tuple{0.85 * half, 1.0, false}, std::tuple{1.0, 0.85 * onGround, false}}) {
+        auto world =
+            buildWorld(discPyramid(solver, pile.alpha, pile.bottom, pile.top, discs, ground));
+        while (world->stepCount() * kDt < 0.5) world->step();
+        const Vec2 settled = world->bodies()[1].position;
+        const double top = world->bodies()[3].mass;
+        const double weight = top * lecture::kGravity;
+        double upper = 0.0, upperFriction = 0.0, below = 0.0;
+        for (const Manifold& manifold : world->manifolds()) {
+          if (manifold.bodyA != 1 && manifold.bodyB != 1) continue;
+          const bool onGroundContact = manifold.bodyA == 0 || manifold.bodyB == 0;
+          for (int i = 0; i < manifold.pointCount; ++i) {
+            const ContactPoint& point = manifold.points[size_t(i)];
+            (onGroundContact ? below : upper) += point.normalImpulse / kDt;
+            if (!onGroundContact) upperFriction += std::abs(point.tangentImpulse) / kDt;
+          }
+        }
+        while (world->stepCount() * kDt < 3.0) world->step();
+        const double moved = (world->bodies()[1].position - settled).norm();
+        const double bottomWeight = world->bodies()[1].mass * lecture::kGravity;
+        INFO(solver << ", α " << pile.alpha * 180.0 / kPi << "°, radii " << pile.bottom << " / "
+                    << pile.top << ", μ discs " << discs << " (threshold " << half << "), ground "
+                    << ground << " (" << onGround << "): bottom disc moved " << moved
+                    << " m from 0.5 to 3 s; at 0.5 s N " << upper << " (" << 0.5 * weight << "), f "
+                    << upperFriction << " (" << 0.5 * weight * half << "), G " << below << " ("
+                    << bottomWeight + 0.5 * weight << ") N");
+        if (!stands) {
+          CHECK(moved > 0.05);
+          continue;
+        }
+        CHECK(moved < 1e-3);
+        CHECK(upper == Approx(0.5 * weight).epsilon(1e-3));
+        CHECK(upperFriction == Approx(0.5 * weight * half).epsilon(1e-2));
+        CHECK(below == Approx(bottomWeight + 0.5 * weight).epsilon(1e-3));
       }
     }
   }

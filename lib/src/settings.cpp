@@ -149,6 +149,7 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"recycle_largest_turn", &s.recycleLargestTurn},
           {"recycle_within_found_distance", &s.recycleWithinFoundDistance},
           {"friction_in_restitution", &s.frictionInRestitution},
+          {"restitution_on_step_totals", &s.restitutionOnStepTotals},
           {"recycle_round_normals", &s.recycleRoundNormals},
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},

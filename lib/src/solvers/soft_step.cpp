@@ -361,13 +361,25 @@ bool SoftStepSolver::applyPointRestitution(Constraint& constraint, SolverBody& a
     bounced = true;
     const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(constraint.normal);
     const double impulse = -cp.normalMass * (vn + constraint.restitution * cp.relativeVelocity);
-    const double total = std::max(cp.normalImpulse + impulse, 0.0);
-    const double change = total - cp.normalImpulse;
-    cp.normalImpulse = total;
-    cp.totalNormalImpulse += change;
-    applyPairImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
+    setBounceImpulse(constraint, cp, a, b, std::max(bounceBase(cp) + impulse, 0.0));
   }
   return bounced;
+}
+
+// The accumulated normal impulse a bounce is kept non-negative on: the impulse applied at the
+// point over the whole step (restitutionOnStepTotals), or the last substep's, as in Box2D v3.
+double SoftStepSolver::bounceBase(const ConstraintPoint& cp) const {
+  return settings_.restitutionOnStepTotals ? cp.totalNormalImpulse : cp.normalImpulse;
+}
+
+// Sets the point's bounce base to `after` (≥ 0) and applies the change. The last substep's
+// impulse, which the next step warm-starts from, takes the change too, never below 0.
+void SoftStepSolver::setBounceImpulse(const Constraint& constraint, ConstraintPoint& cp,
+                                      SolverBody& a, SolverBody& b, double after) const {
+  const double change = after - bounceBase(cp);
+  cp.normalImpulse = std::max(cp.normalImpulse + change, 0.0);
+  cp.totalNormalImpulse += change;
+  applyPairImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
 }
 
 // Both points of a two-point manifold that both bounce: the accumulated normal impulses x ≥ 0 that
@@ -383,14 +395,16 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
   const Vec2& n = constraint.normal;
   const Mat2 k = normalCouplingMatrix(a, b, n, {p0.armA, p1.armA}, {p0.armB, p1.armB});
   if (!isWellConditioned(k, settings_.pairRestitution.conditionLimit)) return false;
-  const Vec2 before(p0.normalImpulse, p1.normalImpulse);
+  const Vec2 before(bounceBase(p0), bounceBase(p1));
   Vec2 missing;  // vn − target at each point now
   for (int i = 0; i < 2; ++i) {
     const ConstraintPoint& cp = constraint.points[size_t(i)];
     const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(n);
     missing(i) = vn + constraint.restitution * cp.relativeVelocity;
   }
-  setPairNormalImpulses(constraint, a, b, solveTwoPointLcp(k, Vec2(missing - k * before)));
+  const Vec2 after = solveTwoPointLcp(k, Vec2(missing - k * before));
+  setBounceImpulse(constraint, p0, a, b, after(0));
+  setBounceImpulse(constraint, p1, a, b, after(1));
   return true;
 }
 

@@ -120,6 +120,9 @@ class SoftStepSolver : public ContactSolver {
   void integratePositions(double h);
   void applyRestitution();
   bool bounces(const ConstraintPoint& cp) const;
+  double bounceBase(const ConstraintPoint& cp) const;
+  void setBounceImpulse(const Constraint& constraint, ConstraintPoint& cp, SolverBody& a,
+                        SolverBody& b, double after) const;
   bool applyPairRestitution(Constraint& constraint, SolverBody& a, SolverBody& b) const;
   bool applyPointRestitution(Constraint& constraint, SolverBody& a, SolverBody& b) const;
   void storeImpulses(const StepContext& context) const;
