@@ -148,6 +148,7 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"recycle_distance", &s.recycleDistance},
           {"recycle_largest_turn", &s.recycleLargestTurn},
           {"recycle_within_found_distance", &s.recycleWithinFoundDistance},
+          {"recycle_in_world_frame", &s.recycleInWorldFrame},
           {"friction_in_restitution", &s.frictionInRestitution},
           {"restitution_on_step_totals", &s.restitutionOnStepTotals},
           {"recycle_round_normals", &s.recycleRoundNormals},

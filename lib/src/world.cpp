@@ -62,6 +62,15 @@ double recycleDistance(const ContactRecycling& limits, const Manifold& old) {
   return std::min(limits.distance, old.found.distance);
 }
 
+// m. How far B's centre has moved relative to A's since the manifold was found: in A's frame (v3),
+// or in the world's, where the recycled normal and arms are kept, so that a pair turning together
+// by θ at a distance d counts as moving d θ.
+double offsetMoved(const ContactRecycling& limits, const Body& a, const Body& b,
+                   const FoundPose& found) {
+  if (!limits.inWorldFrame) return (a.toLocal(b.position) - found.relativePosition).norm();
+  return (b.position - a.position - rotation(found.angleA) * found.relativePosition).norm();
+}
+
 }  // namespace
 
 World::World(const WorldSettings& settings, std::unique_ptr<ContactSolver> solver)
@@ -188,8 +197,8 @@ bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
   if (std::abs(turnA) > limits.largestTurn || std::abs(turnB) > limits.largestTurn) return false;
   const double reach =
       std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
-  const double moved = (a.toLocal(b.position) - old.found.relativePosition).norm() +
-                       reach * std::abs(std::sin(turnB - turnA));
+  const double moved =
+      offsetMoved(limits, a, b, old.found) + reach * std::abs(std::sin(turnB - turnA));
   if (moved >= recycleDistance(limits, old)) return false;
   manifold = old;
   const auto armTurn = [&limits](const Body& body, double turn) {

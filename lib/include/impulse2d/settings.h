@@ -453,6 +453,14 @@ struct SoftStepSettings {
   /// recycleDistance for all, and a pentagon rolling over its vertices lands its next vertex up to
   /// 2.4 cm deep (240 Hz; 3.4e-4 m with it on).
   bool recycleWithinFoundDistance = true;
+  /// Recycle in the world's frame, ours beyond Box2D v3: B's movement since the manifold was
+  /// found is measured in the world's frame, where the kept normal and arms live, not in A's, so
+  /// a pair that turns together by θ at a distance d between centres counts as moving d θ. Off
+  /// (v3): such a pair never moves, its unturned arms read a slip that is not there, and friction
+  /// holding that slip drags the top body outward by about d θ² / 2: a box 1.5 m out on a seesaw
+  /// turning 0.18 rad crept 2.5 cm along it and the plank turned 18 % too slowly (5 mm and 8 %
+  /// with it on; docs/soft-step.md).
+  bool recycleInWorldFrame = true;
   /// Recycle round normals, as Box2D v3 does. Off (ours beyond v3): a manifold whose normal runs
   /// to a circle's centre from a polygon's vertex or another circle's centre is found anew every
   /// step, since that normal turns as the bodies move past each other (by the distance moved over

@@ -75,6 +75,10 @@ struct ContactRecycling {
   /// A manifold whose normal runs to a circle's centre (normalRunsToCentre) is kept too
   /// (SoftStepSettings::recycleRoundNormals); false: it is found anew every step.
   bool roundNormals = true;
+  /// B's movement is measured in the world's frame, where the recycled normal and arms are kept,
+  /// so a pair that turns together counts as moving (SoftStepSettings::recycleInWorldFrame);
+  /// false: in A's frame, as Box2D v3 measures it.
+  bool inWorldFrame = false;
 };
 
 class ContactSolver {

@@ -50,8 +50,9 @@ Softness loadedSoftness(double hertz, double dampingRatio, double h, double load
 
 ContactRecycling SoftStepSolver::contactRecycling() const {
   if (!settings_.contactRecycling) return {};
-  return {settings_.recycleDistance, settings_.recycleLargestTurn, settings_.roundSurfaces,
-          settings_.recycleWithinFoundDistance, settings_.recycleRoundNormals};
+  return {settings_.recycleDistance,     settings_.recycleLargestTurn,
+          settings_.roundSurfaces,       settings_.recycleWithinFoundDistance,
+          settings_.recycleRoundNormals, settings_.recycleInWorldFrame};
 }
 
 void SoftStepSolver::solveVelocities(const StepContext& context) {
