@@ -459,7 +459,9 @@ struct SoftStepSettings {
   /// (v3): such a pair never moves, its unturned arms read a slip that is not there, and friction
   /// holding that slip drags the top body outward by about d θ² / 2: a box 1.5 m out on a seesaw
   /// turning 0.18 rad crept 2.5 cm along it and the plank turned 18 % too slowly (5 mm and 8 %
-  /// with it on; docs/soft-step.md).
+  /// with it on). Its cost: pairs that lean together in a swaying pile are found anew with turned
+  /// arms, so soft step with loadScaledStiffness squeezes heavy_on_light's light boxes out from a
+  /// mass ratio of 22.9 instead of 31.6 (docs/soft-step.md).
   bool recycleInWorldFrame = true;
   /// Recycle round normals, as Box2D v3 does. Off (ours beyond v3): a manifold whose normal runs
   /// to a circle's centre from a polygon's vertex or another circle's centre is found anew every
