@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -313,4 +314,88 @@ TEST_CASE("a seesaw balances when m₁ d₁ = m₂ d₂, and otherwise turns at 
                                          << aFrame << " m with v3's measure)");
   CHECK(worldFrame < 0.01);
   CHECK(aFrame > 0.02);
+}
+
+namespace {
+
+/// A convex polygon of 4 to 7 corners on an ellipse (half axes 0.2 to 0.8 m, turned at random),
+/// the corners spread round it with jitter, so every corner turns by at least 20°.
+Shape randomConvexPolygon(std::mt19937& random) {
+  const auto uniform = [&random](double low, double high) {
+    return low + (high - low) * double(random()) / double(std::mt19937::max());
+  };
+  const int corners = 4 + int(random() % 4);
+  const double a = uniform(0.2, 0.8);
+  const double b = uniform(0.2, 0.8);
+  const double turn = uniform(0.0, 2.0 * kPi);
+  std::vector<Vec2> vertices;
+  for (int k = 0; k < corners; ++k) {
+    const double at = 2.0 * kPi * (k + uniform(-0.25, 0.25)) / corners;
+    const Vec2 onEllipse(a * std::cos(at), b * std::sin(at));
+    vertices.push_back(rotation(turn) * onEllipse);
+  }
+  return makePolygon(vertices).shape;
+}
+
+struct FacePlacement {
+  double angle = 0.0;   ///< rad, the body's angle that puts the face down
+  double height = 0.0;  ///< m, the centroid above the ground with the face on it
+  double left = 0.0;    ///< m, the face's ends relative to the centroid's x
+  double right = 0.0;
+};
+
+/// The pose that lays `shape` on its face `face` on flat ground.
+FacePlacement onFace(const Shape& shape, int face) {
+  const Vec2 normal = shape.normals[size_t(face)];
+  FacePlacement placement;
+  placement.angle = -0.5 * kPi - std::atan2(normal.y(), normal.x());
+  const Mat2 turn = rotation(placement.angle);
+  const Vec2 a = turn * shape.vertices[size_t(face)];
+  const Vec2 b = turn * shape.vertices[(size_t(face) + 1) % shape.vertices.size()];
+  placement.height = -a.y();
+  placement.left = std::min(a.x(), b.x());
+  placement.right = std::max(a.x(), b.x());
+  return placement;
+}
+
+}  // namespace
+
+// A body lying on a face stands while the vertical through its centroid falls inside that face,
+// and tips about the nearer end once it falls outside: the ground's push can only act within the
+// face, so only there can it balance the weight's moment. Random convex polygons on every face
+// (placements within 5 % of the face's width of the balance are left out), placed at rest,
+// friction 1 (the pivot then holds: μ above e h / (k² + h²) for all of these).
+TEST_CASE("a convex polygon lying on a face stands iff its centroid is above that face",
+          "[tipping][polygon]") {
+  std::mt19937 random(42);
+  for (int polygon = 0; polygon < 24; ++polygon) {
+    const Shape shape = randomConvexPolygon(random);
+    for (int face = 0; face < int(shape.vertices.size()); ++face) {
+      const FacePlacement placement = onFace(shape, face);
+      const double width = placement.right - placement.left;
+      const double inside = std::min(-placement.left, placement.right);  // < 0: outside
+      if (std::abs(inside) < 0.05 * width) continue;
+      for (const std::string solver : {"micro", "sequential", "reference", "soft_step"}) {
+        Scene scene = lecture::sceneWith(solver, kDt);
+        scene.bodies.push_back(lecture::ground(kFriction));
+        BodyDef body;
+        body.shape = shape;
+        body.angle = placement.angle;
+        body.position = Vec2(0.0, placement.height);
+        body.friction = kFriction;
+        scene.bodies.push_back(body);
+        auto world = buildWorld(scene);
+        while (world->stepCount() * kDt < 2.0) world->step();
+        const double turned = std::abs(world->bodies()[1].angle - placement.angle);
+        INFO(solver << ", polygon " << polygon << ", face " << face << ": centroid "
+                    << inside / width << " of the face's width inside it; turned " << turned
+                    << " rad in 2 s");
+        if (inside > 0.0) {
+          CHECK(turned < 1e-3);
+        } else {
+          CHECK(turned > 0.1);
+        }
+      }
+    }
+  }
 }
