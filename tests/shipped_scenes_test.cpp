@@ -76,7 +76,7 @@ TEST_CASE(
       "incline_holds", "incline_slides", "incline_friction", "rolling_disk",
       "spinning_disk", "stack",          "pyramid",          "cradle",
       "soft_step",     "heavy_on_light", "tipping",          "cradle_two",
-      "ladder"};
+      "ladder",        "seesaw"};
   expected.insert(kBenchmarkScenes.begin(), kBenchmarkScenes.end());
   std::set<std::string> found;
   for (const auto& entry :
@@ -219,6 +219,27 @@ TEST_CASE("ladder: above μ = d / h the ladder stands, below it the foot slides 
   runToEnd(*world, scene);
   CHECK((bodyNamed(*world, "holds").position - start).norm() < 1e-3);
   CHECK(bodyNamed(*world, "slides").angle < angle - 1.0);  // fell from 60° to lying nearly flat
+}
+
+// Moments about each tip: Σ m x of the boxes (and the plank, centred on the tip) is 0 on the
+// balanced seesaw and positive towards the heavier box on the other.
+TEST_CASE("seesaw: the plank whose moments cancel stays level, the other tips to its heavier side",
+          "[scenes][tipping][seesaw]") {
+  const Scene scene = shippedScene("seesaw");
+  const auto moment = [&](const std::string& a, const std::string& b, const std::string& tip) {
+    double sum = 0.0;
+    for (const std::string& name : {a, b}) {
+      const BodyDef& box = definitionNamed(scene, name);
+      sum += box.density * (box.position.x() - definitionNamed(scene, tip).position.x());
+    }
+    return sum;  // per box area: the boxes are the same size
+  };
+  REQUIRE(moment("heavy_near", "light_far", "fulcrum_balanced") == Approx(0.0).margin(1e-12));
+  REQUIRE(moment("heavier", "lighter", "fulcrum_tips") < 0.0);  // the heavier box is on the left
+  auto world = buildWorld(scene);
+  runToEnd(*world, scene);
+  CHECK(std::abs(bodyNamed(*world, "plank_balanced").angle) < 1e-3);
+  CHECK(bodyNamed(*world, "plank_tips").angle > 0.3);  // turned anticlockwise until its end landed
 }
 
 // The strikers are the balls that move at the start, all at the same speed.
