@@ -12,7 +12,9 @@ std::vector<SettingField> describe(WorldSettings& s) {
           {"sleeping", &s.sleeping},
           {"sleep_linear_speed", &s.sleepLinearSpeed},
           {"sleep_angular_speed", &s.sleepAngularSpeed},
-          {"time_to_sleep", &s.timeToSleep}};
+          {"time_to_sleep", &s.timeToSleep},
+          {"keep_speeding_up_awake", &s.keepSpeedingUpAwake},
+          {"speed_up_share", &s.speedUpShare}};
 }
 
 MicroCollisionSettings MicroCollisionSettings::lecture() {

@@ -102,6 +102,11 @@ void World::applyLoads(double time) {
 void World::substep(double h) {
   statistics_ = StepStatistics{};
   wakeDisturbedBodies();
+  if (std::none_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.isAwake(); })) {
+    // Nothing awake, nothing can move: the last manifolds are kept as they are, nothing is solved.
+    statistics_.keptManifolds = int(manifolds_.size());
+    return;
+  }
   findContacts(h);
   wakeTouchedIslands();
   const bool solverMovesBodies = solver_->integratesBodies();
@@ -407,10 +412,25 @@ void World::putRestingIslandsToSleep(double h) {
   }
 }
 
+// A body rests while it is slower than the thresholds and, with keepSpeedingUpAwake, has not sped
+// up by speedUpShare of them since its rest began; a body that has begins its rest again.
 void World::updateSleepTime(Body& body, double h) const {
-  const bool resting = body.velocity.norm() < settings_.sleepLinearSpeed &&
-                       std::abs(body.angularVelocity) < settings_.sleepAngularSpeed;
-  body.sleepTime = resting ? body.sleepTime + h : 0.0;
+  const double speed = body.velocity.norm();
+  const double spin = std::abs(body.angularVelocity);
+  if (speed >= settings_.sleepLinearSpeed || spin >= settings_.sleepAngularSpeed) {
+    body.sleepTime = 0.0;
+    return;
+  }
+  const double share = settings_.speedUpShare;
+  const bool speedingUp = settings_.keepSpeedingUpAwake &&
+                          (speed - body.restSpeed > share * settings_.sleepLinearSpeed ||
+                           spin - body.restSpin > share * settings_.sleepAngularSpeed);
+  if (body.sleepTime == 0.0 || speedingUp) {
+    body.sleepTime = 0.0;
+    body.restSpeed = speed;
+    body.restSpin = spin;
+  }
+  body.sleepTime += h;
 }
 
 }  // namespace impulse2d

@@ -64,6 +64,9 @@ struct Body {
   bool asleep = false;
   /// s. How long the body has been slower than the world's sleep thresholds.
   double sleepTime = 0.0;
+  /// m/s and rad/s. Its speed and spin when that rest began (WorldSettings::keepSpeedingUpAwake).
+  double restSpeed = 0.0;
+  double restSpin = 0.0;
 
   bool isStatic() const { return type == BodyType::Static; }
   /// Dynamic and not asleep: integrated and solved this step.

@@ -37,6 +37,19 @@ struct WorldSettings {
   /// s. An island sleeps once every body in it has rested this long (Box2D's half a second:
   /// long enough that a body at the top of a bounce or a swing is not frozen).
   double timeToSleep = 0.5;
+  /// Keep a body that is speeding up awake, ours beyond Box2D: a body counts as resting only while
+  /// its speed and spin have grown by less than speedUpShare of the thresholds above since its
+  /// rest began; past that its rest begins again. A body that starts from rest and gathers speed
+  /// slowly is then not frozen before it reaches the thresholds: under Box2D's rule (off) a disc
+  /// rolling down 0.15° (a = 0.017 m/s²), a box on a slope 0.002 under its friction's limit or a
+  /// seesaw 0.5 % out of balance is still slower than them after timeToSleep, falls asleep and
+  /// never moves again, since a static body wakes nothing. With it on the slowest start that
+  /// escapes is ten times slower (docs/sleeping.md).
+  bool keepSpeedingUpAwake = true;
+  /// The share of sleepLinearSpeed (sleepAngularSpeed) by which a resting body's speed (spin) may
+  /// grow before it counts as speeding up: 1 mm/s and 0.2°/s. A settled pile's bodies jitter up
+  /// by at most half of that (4.7e-4 m/s measured on a 10-box stack under micro).
+  double speedUpShare = 0.1;
 };
 
 /// The lecture's micro-collision resolver (lecture 3.6, Millington ch. 14-15).
