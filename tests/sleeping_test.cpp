@@ -163,8 +163,8 @@ TEST_CASE("a disc starting to roll down a gentle slope is not put to sleep while
     const double awake = rolledOnGentleSlope(solver, 0.1, false, true, 6.0);
     const double kept = rolledOnGentleSlope(solver, 0.1, true, true, 6.0);
     const double frozen = rolledOnGentleSlope(solver, 0.1, true, false, 6.0);
-    INFO(solver << ": rolled " << awake << " m awake, " << kept << " m with sleeping on, "
-                << frozen << " m under Box2D's rule");
+    INFO(solver << ": rolled " << awake << " m awake, " << kept << " m with sleeping on, " << frozen
+                << " m under Box2D's rule");
     CHECK(awake > 0.15);  // (1/3) g sin θ t² = 0.205 m
     CHECK(kept == Approx(awake).epsilon(1e-9));
     CHECK(frozen < 0.01 * awake);
