@@ -704,7 +704,8 @@ TEST_CASE("a disc bouncing obliquely leaves rolling, or with its slip cut by μ 
 namespace {
 
 /// The changes, in units of g cos θ dt, of an elastic ball's speed off a frictionless slope of
-/// `degrees` from one bounce to the next, dropped 1 m onto it: three bounces' worth in 6 s.
+/// `degrees` from one bounce to the next, dropped 1 m onto it: of its first four bounces within
+/// 6 s (three at 15°, two at 30°, where the flights are longer).
 std::vector<double> bounceGains(const std::string& solver, double dt, double degrees) {
   const double angle = degrees * kPi / 180.0;
   Scene scene = lecture::sceneWith(solver, dt);
