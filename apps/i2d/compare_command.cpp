@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "failures.h"
+#include "output_directories.h"
 #include "frame_output.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/panels.h"
@@ -54,25 +55,16 @@ std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSet
   return runs;
 }
 
-bool isFinite(const Simulation& simulation) {
-  for (const impulse2d::Body& body : simulation.bodies()) {
-    if (!body.position.allFinite() || !std::isfinite(body.angle)) return false;
-  }
-  return true;
-}
-
 void stepPanels(std::vector<PanelRun>& runs) {
   for (PanelRun& run : runs) {
     try {
       run.simulation->step();
+    } catch (const impulse2d::NonFiniteState& failure) {
+      throw RunFailure("panel '" + run.label + "': " + failure.what());
     } catch (const impulse2d::ReferenceSolveFailure& failure) {
       throw RunFailure("panel '" + run.label + "' at " +
                        stepAndTime(run.simulation->stepCount() + 1, run.simulation->settings().dt) +
                        ": " + failure.what());
-    }
-    if (!isFinite(*run.simulation)) {
-      throw RunFailure("panel '" + run.label + "' became non-finite at step " +
-                       std::to_string(run.simulation->stepCount()));
     }
   }
 }
@@ -132,9 +124,11 @@ void printPanelSummary(const std::vector<PanelRun>& runs) {
 
 int compareCommand(const CompareOptions& options) {
   checkVideoPossible(options.frames);
-  if (options.plots) preparePlotDirectory(*options.plots);
   const RenderSettings settings = renderSettings(options.frames);
   std::vector<PanelRun> runs = startPanels(options, settings);
+  createOutputDirectory(options.frames.directory, "--frames");
+  createOutputDirectory(options.plots, "--plots");
+  if (options.plots) preparePlotDirectory(*options.plots);
   const SceneFile& first = runs.front().scene;
   FrameWriter writer(*options.frames.directory, first.name, options.every,
                      comparePrefix(first.name), settings);

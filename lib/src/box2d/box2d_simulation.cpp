@@ -132,6 +132,7 @@ void Box2dSimulation::step() {
   world_->world.Step(float(settings_.dt), iterations_.velocityIterations,
                      iterations_.positionIterations);
   readBodies();
+  stopAtNonFiniteBody(bodies_, settings_.gravity, stepCount_ + 1, kBox2dName);
   readContacts();
   ++stepCount_;
 }
