@@ -223,20 +223,21 @@ TEST_CASE("a CSV that cannot be written fails with exit code 1 and leaves nothin
 
 TEST_CASE("a state that becomes non-finite stops the run, keeping the rows so far",
           "[i2d][errors][csv]") {
-  // Gravity of -1e308 m/s² over 1 s steps: step 1 reaches v = -1e308, step 2 overflows to -inf.
+  // Gravity of -1e154 m/s² over 1 s steps on a disc of 0.5 m (0.785 kg): step 1 reaches
+  // v = -1e154, y = -1e154 and energies near 1e308 J; step 2 overflows them to infinity.
   const TemporaryDirectory directory;
   const std::string scene = directory / "overflow.toml";
   writeFile(scene,
-            "[world]\ngravity = [0, -1e308]\ndt = 1\nsteps = 10\nsolver = \"micro\"\n"
-            "[[body]]\nname = \"rocket\"\nshape = \"circle\"\nradius = 1\n");
+            "[world]\ngravity = [0, -1e154]\ndt = 1\nsteps = 10\nsolver = \"micro\"\n"
+            "[[body]]\nname = \"rocket\"\nshape = \"circle\"\nradius = 0.5\n");
   const std::string csv = directory / "overflow.csv";
   const Outcome outcome = i2d("run " + scene + " --csv " + csv);
   CHECK(outcome.exitCode == 1);
-  CHECK(outcome.err == "error: body rocket became non-finite at step 2\n");
+  CHECK(outcome.err == "error: body rocket became non-finite at step 2 (solver micro)\n");
   const std::vector<std::string> lines = readLines(csv);
   REQUIRE(lines.size() == 3);
   CHECK(lines[0] == kHeader);
-  CHECK(lines[2] == "1,1,rocket,0,-1e+308,0,0,-1e+308,0");
+  CHECK(lines[2] == "1,1,rocket,0,-1e+154,0,0,-1e+154,0");
 }
 
 TEST_CASE("i2d check prints the solver, settings and bodies", "[i2d][check]") {
