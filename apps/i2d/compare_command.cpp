@@ -11,6 +11,7 @@
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/panels.h"
 #include "impulse2d/scene/scene_file.h"
+#include "impulse2d/scene/setting_ranges.h"
 #include "impulse2d/solvers/reference_solver.h"
 #include "plots.h"
 #include "scene_setup.h"
@@ -39,11 +40,20 @@ SceneFile panelScene(const SceneFile& file, const SceneOptions& common, const Pa
   options.settings.insert(options.settings.end(), panel.settings.begin(), panel.settings.end());
   SceneFile scene = file;
   applyOverrides(options, scene);
+  impulse2d::checkSceneSize(scene, common.scenePath);
   return scene;
+}
+
+/// The panels side by side make one image: its pixels are refused before anything is drawn.
+void checkPanelPixels(const SceneFile& file, const CompareOptions& options) {
+  const std::string refused = impulse2d::checkFramePixels(file.view.width, file.view.height,
+                                                          int(options.panels.size()));
+  if (!refused.empty()) throw impulse2d::SceneError(options.scene.scenePath, refused);
 }
 
 std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
   const SceneFile file = impulse2d::loadSceneFile(options.scene.scenePath);
+  checkPanelPixels(file, options);
   const Camera camera = sceneCamera(file, settings);  // --set changes no body: one view for all
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {

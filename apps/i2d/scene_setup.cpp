@@ -22,6 +22,7 @@ void applyOverrides(const SceneOptions& options, impulse2d::SceneFile& scene) {
 impulse2d::SceneFile loadScene(const SceneOptions& options) {
   impulse2d::SceneFile scene = impulse2d::loadSceneFile(options.scenePath);
   applyOverrides(options, scene);
+  impulse2d::checkSceneSize(scene, options.scenePath);
   return scene;
 }
 
