@@ -147,6 +147,7 @@ int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& 
 int runCommand(const RunOptions& options) {
   if (options.errorVsReferencePath) return errorVsReferenceRun(options);
   const SceneFile scene = loadScene(options.scene);
+  warnAboutStartingOverlaps(scene, std::cerr);
   createOutputDirectory(options.frames.directory, "--frames");
   createOutputDirectory(options.plots, "--plots");
   std::unique_ptr<Simulation> simulation = impulse2d::makeSimulation(scene);
