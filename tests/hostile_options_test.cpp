@@ -39,8 +39,8 @@ position = [0.0, 0.2]
 TEST_CASE("a failed write leaves no temporary file beside its target", "[outputs][errors]") {
   const Scratch scratch;
   fs::create_directory(scratch / "taken");
-  const Outcome errors = i2d("run " + kBox + " --error-vs-reference " + (scratch / "taken"),
-                             scratch);
+  const Outcome errors =
+      i2d("run " + kBox + " --error-vs-reference " + (scratch / "taken"), scratch);
   CHECK(errors.exitCode == 1);
   CHECK(errors.err == "error: cannot write " + (scratch / "taken") + ": Is a directory\n");
   const Outcome csv = i2d("run " + kBox + " --csv " + (scratch / "taken"), scratch);
@@ -79,10 +79,9 @@ TEST_CASE("a --panel missing its colon or an assignment's '=' is refused, exit 2
           "[options][compare]") {
   const Scratch scratch;
   const std::string compare = "compare " + kBox + " --frames " + (scratch / "frames");
-  const Outcome noColon =
-      i2d(compare + " --panel 'on: solver.warm_starting=true'" +
-              " --panel 'off solver.warm_starting=false'",
-          scratch);
+  const Outcome noColon = i2d(compare + " --panel 'on: solver.warm_starting=true'" +
+                                  " --panel 'off solver.warm_starting=false'",
+                              scratch);
   CHECK(noColon.exitCode == 2);
   CHECK(noColon.err ==
         "error: option --panel needs a colon after its label, 'LABEL: section.key=value; ...', "
@@ -93,8 +92,9 @@ TEST_CASE("a --panel missing its colon or an assignment's '=' is refused, exit 2
         "error: option --panel needs section.key=value assignments after its label, not "
         "'solver.warm_starting'\n");
   CHECK_FALSE(fs::exists(scratch / "frames"));
-  const Outcome labelOnly = i2d(compare + " --panel 'defaults' --panel 'cold: "
-                                          "solver.warm_start=false'",
+  const Outcome labelOnly = i2d(compare +
+                                    " --panel 'defaults' --panel 'cold: "
+                                    "solver.warm_start=false'",
                                 scratch);
   CHECK(labelOnly.exitCode == 0);  // a label alone still runs the defaults
 }

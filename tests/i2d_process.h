@@ -55,8 +55,8 @@ struct Outcome {
 
 /// Runs i2d with the arguments (a shell word list); its streams go to files in `scratch`.
 inline Outcome i2d(const std::string& arguments, const Scratch& scratch) {
-  const std::string command = kBinary + " " + arguments + " >" + (scratch / "stdout.txt") +
-                              " 2>" + (scratch / "stderr.txt");
+  const std::string command = kBinary + " " + arguments + " >" + (scratch / "stdout.txt") + " 2>" +
+                              (scratch / "stderr.txt");
   const int status = std::system(command.c_str());
   const Outcome outcome{WIFEXITED(status) ? WEXITSTATUS(status) : -1,
                         readFile(scratch / "stdout.txt"), readFile(scratch / "stderr.txt")};

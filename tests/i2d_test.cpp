@@ -176,7 +176,8 @@ TEST_CASE("a bad command line is one error line and exit code 2", "[i2d][errors]
       {"run " + scene + " --every 0", "error: option --every needs an integer >= 1, not '0'\n"},
       {"run " + scene + " --solver fast",
        "error: unknown solver 'fast' (known: micro, sequential, reference, soft_step, box2d)\n"},
-      {"run " + scene + " --set world.dt=-1", "error: --set:1:10: dt = -1: must be in [1e-06, 1]\n"},
+      {"run " + scene + " --set world.dt=-1",
+       "error: --set:1:10: dt = -1: must be in [1e-06, 1]\n"},
       {"check " + scene + " " + scene,
        "error: unexpected argument '" + scene + "': i2d check takes one SCENE\n"},
   };

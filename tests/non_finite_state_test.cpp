@@ -105,19 +105,17 @@ TEST_CASE("every command ends an overflowing run with exit 1 and one line, never
   }
   for (const std::string solver : {"micro", "sequential", "reference"}) {
     INFO(solver);
-    const Outcome measured =
-        i2d("run " + scene + " --solver " + solver + " --error-vs-reference " +
-                (scratch / "errors.csv"),
-            scratch);
+    const Outcome measured = i2d("run " + scene + " --solver " + solver + " --error-vs-reference " +
+                                     (scratch / "errors.csv"),
+                                 scratch);
     CHECK(measured.exitCode == 1);
     CHECK(measured.err == "error: " + line + solver + ")\n");
   }
   const Outcome agree = i2d("agree " + scene, scratch);
   CHECK(agree.exitCode == 1);
   CHECK(agree.err == "error: " + line + "box2d)\n");
-  const Outcome compare =
-      i2d("compare " + scene + " --solvers reference,micro --frames " + (scratch / "frames"),
-          scratch);
+  const Outcome compare = i2d(
+      "compare " + scene + " --solvers reference,micro --frames " + (scratch / "frames"), scratch);
   CHECK(compare.exitCode == 1);
   CHECK(compare.err == "error: panel 'reference': " + line + "reference)\n");
 }

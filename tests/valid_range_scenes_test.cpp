@@ -41,8 +41,8 @@ double logUniform(std::mt19937& random, double a, double b) {
 /// A value inside `range`: the bounds themselves a quarter of the time each, else spread over
 /// the decades between them.
 double insideRange(std::mt19937& random, const SettingRange& range, bool integer) {
-  const double highest = integer ? std::min(range.highest, range.lowest + kCountSpan)
-                                 : range.highest;
+  const double highest =
+      integer ? std::min(range.highest, range.lowest + kCountSpan) : range.highest;
   const int pick = std::uniform_int_distribution<int>(0, 3)(random);
   if (pick == 0 && range.lowestIncluded) return range.lowest;
   if (pick == 1) return highest;
@@ -117,8 +117,10 @@ std::string randomScene(int index, const std::string& solver) {
   scene << "[world]\nsteps = " << kSteps << "\nsolver = \"" << solver
         << "\"\nsubsteps = " << std::uniform_int_distribution<int>(1, 4)(random) << "\n"
         << settingLines(random, "world", describe(world)) << "[solver]\n";
-  if (solver == "micro" && std::bernoulli_distribution(0.3)(random)) scene << "preset = \"lecture\"\n";
-  if (solver == "soft_step") scene << "substeps = " << std::uniform_int_distribution<int>(1, 4)(random) << "\n";
+  if (solver == "micro" && std::bernoulli_distribution(0.3)(random))
+    scene << "preset = \"lecture\"\n";
+  if (solver == "soft_step")
+    scene << "substeps = " << std::uniform_int_distribution<int>(1, 4)(random) << "\n";
   scene << settingLines(random, solver, solverSettingFields(solvers, solver))
         << "[[body]]\nname = \"floor\"\ntype = \"static\"\nshape = \"box\"\nsize = [8.0, 1.0]\n"
            "position = [0.0, -0.5]\n";
@@ -175,8 +177,7 @@ TEST_CASE("scenes inside the valid ranges end finite or stop cleanly under every
       const SceneFile scene = parseScene(text, "random.toml");
       stopped += !runScene(scene).empty();
       if (solver == kBox2dName) continue;
-      impulse2d::World watched(scene.world,
-                               makeWatchedSolver(scene.solver, scene.solverSettings));
+      impulse2d::World watched(scene.world, makeWatchedSolver(scene.solver, scene.solverSettings));
       for (const Body& body : buildBodies(scene)) watched.addBody(body);
       runToEnd(watched, scene.steps);
     }

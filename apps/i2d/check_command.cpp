@@ -8,8 +8,8 @@
 
 #include "commands.h"
 #include "failures.h"
-#include "scene_setup.h"
 #include "impulse2d/scene/scene_file.h"
+#include "scene_setup.h"
 
 namespace i2d {
 namespace {

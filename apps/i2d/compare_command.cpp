@@ -6,13 +6,13 @@
 
 #include "commands.h"
 #include "failures.h"
-#include "output_directories.h"
 #include "frame_output.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/panels.h"
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/scene/setting_ranges.h"
 #include "impulse2d/solvers/reference_solver.h"
+#include "output_directories.h"
 #include "plots.h"
 #include "scene_setup.h"
 
@@ -46,8 +46,8 @@ SceneFile panelScene(const SceneFile& file, const SceneOptions& common, const Pa
 
 /// The panels side by side make one image: its pixels are refused before anything is drawn.
 void checkPanelPixels(const SceneFile& file, const CompareOptions& options) {
-  const std::string refused = impulse2d::checkFramePixels(file.view.width, file.view.height,
-                                                          int(options.panels.size()));
+  const std::string refused =
+      impulse2d::checkFramePixels(file.view.width, file.view.height, int(options.panels.size()));
   if (!refused.empty()) throw impulse2d::SceneError(options.scene.scenePath, refused);
 }
 

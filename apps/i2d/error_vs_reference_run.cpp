@@ -13,10 +13,10 @@
 
 #include "commands.h"
 #include "failures.h"
-#include "output_directories.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/solvers/error_vs_reference.h"
 #include "impulse2d/world.h"
+#include "output_directories.h"
 #include "scene_setup.h"
 
 namespace i2d {

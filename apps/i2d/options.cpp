@@ -258,8 +258,10 @@ PanelOption parsePanel(const std::string& text) {
     throw UsageError("option --panel needs 'LABEL: section.key=value; ...', not '" + text + "'");
   }
   if (colon == std::string::npos && text.find('=') != std::string::npos) {
-    throw UsageError("option --panel needs a colon after its label, 'LABEL: section.key=value; "
-                     "...', not '" + text + "'");
+    throw UsageError(
+        "option --panel needs a colon after its label, 'LABEL: section.key=value; "
+        "...', not '" +
+        text + "'");
   }
   const std::string assignments = colon == std::string::npos ? "" : trim(text.substr(colon + 1));
   if (!assignments.empty()) panel.settings = splitList(assignments, ';', "--panel");

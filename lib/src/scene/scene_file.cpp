@@ -106,9 +106,11 @@ SceneFile parseScene(std::string_view text, const std::string& sourceName) {
 }
 
 void checkSceneSize(const Scene& scene, const std::string& sourceName) {
-  const auto dynamic = std::count_if(scene.bodies.begin(), scene.bodies.end(),
-                                     [](const BodyDef& body) { return body.type == BodyType::Dynamic; });
-  const int solverSubsteps = scene.solver == "soft_step" ? scene.solverSettings.softStep.substeps : 1;
+  const auto dynamic =
+      std::count_if(scene.bodies.begin(), scene.bodies.end(),
+                    [](const BodyDef& body) { return body.type == BodyType::Dynamic; });
+  const int solverSubsteps =
+      scene.solver == "soft_step" ? scene.solverSettings.softStep.substeps : 1;
   const std::string refused =
       checkRunSize(scene.steps, long(dynamic), scene.world.substeps * solverSubsteps);
   if (!refused.empty()) throw SceneError(sourceName, refused);

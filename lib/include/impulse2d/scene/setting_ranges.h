@@ -34,7 +34,8 @@ inline constexpr long kMostFramePixels = 16384L * 4096L;
 inline constexpr int kMostFrameSide = 16384;
 
 /// Empty when the scene's steps times its dynamic bodies times its substeps (the world's times
-/// soft step's) fit kMostBodySteps; else the message refusing the run, naming the product and the limit.
+/// soft step's) fit kMostBodySteps; else the message refusing the run, naming the product and the
+/// limit.
 std::string checkRunSize(long steps, long dynamicBodies, int substeps);
 
 /// Empty when `panels` frames of width × height side by side fit kMostFramePixels; else the
