@@ -43,6 +43,7 @@ TEST_CASE("a failed write leaves no temporary file beside its target", "[outputs
       i2d("run " + kBox + " --error-vs-reference " + (scratch / "taken"), scratch);
   CHECK(errors.exitCode == 1);
   CHECK(errors.err == "error: cannot write " + (scratch / "taken") + ": Is a directory\n");
+  CHECK(scratch.entries() == std::vector<std::string>{"taken"});
   const Outcome csv = i2d("run " + kBox + " --csv " + (scratch / "taken"), scratch);
   CHECK(csv.exitCode == 1);
   CHECK(scratch.entries() == std::vector<std::string>{"taken"});
