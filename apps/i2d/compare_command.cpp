@@ -1,6 +1,5 @@
 // `i2d compare`: the same scene run side by side, once per solver or once per set of --set
 // changes, drawn as labelled panels with one camera, every K-th step, and a contact sheet.
-#include <cmath>
 #include <iostream>
 #include <memory>
 
