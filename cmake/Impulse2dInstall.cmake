@@ -47,6 +47,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/demos/scenes/ DESTINATION ${IMPULSE2D_IN
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
+list(JOIN IMPULSE2D_COMPONENTS ", " IMPULSE2D_COMPONENT_NAMES)
+
 # The CMake package: impulse2d-config.cmake with its version file (0.2 accepts 0.2.x).
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/impulse2d-config.cmake.in
   ${PROJECT_BINARY_DIR}/impulse2d-config.cmake
