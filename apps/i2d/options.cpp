@@ -10,6 +10,7 @@
 
 #include "failures.h"
 #include "impulse2d/box2d/box2d_simulation.h"
+#include "scene_search.h"
 
 namespace i2d {
 namespace {
@@ -173,7 +174,7 @@ void parse(const std::vector<std::string>& arguments, const std::string& command
                          command + " --help)");
       }
     } else if (scenePath.empty()) {
-      scenePath = argument;
+      scenePath = findScene(argument);
     } else {
       throw UsageError("unexpected argument '" + argument + "': i2d " + command +
                        " takes one SCENE");
