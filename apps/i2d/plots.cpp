@@ -134,14 +134,15 @@ std::string writeTracePlot(const std::string& directory, const std::string& name
   const fs::path png = root / (name + stem + ".png");
   const fs::path scriptPath = root / (name + stem + ".gp");
   std::ofstream script(scriptPath);
-  script << "set terminal pngcairo noenhanced size 800,480 font \"sans,11\"\nset grid\nset output \""
-         << gnuplotText(png.string()) << "\"\nset title \""
-         << gnuplotText(name + ": step " + std::to_string(step) +
-                        ", velocity error each solver event removes")
-         << "\"\nset xlabel \"solver event (colour: iteration)\"\n"
-         << "set ylabel \"|velocity change wanted| (m/s)\"\nset logscale y\nunset colorbox\n"
-         << "plot \"" << gnuplotText(data.string())
-         << "\" using 1:($3 > 0 ? $3 : 1/0):2 with linespoints pt 7 ps 0.8 lc palette notitle\n";
+  script
+      << "set terminal pngcairo noenhanced size 800,480 font \"sans,11\"\nset grid\nset output \""
+      << gnuplotText(png.string()) << "\"\nset title \""
+      << gnuplotText(name + ": step " + std::to_string(step) +
+                     ", velocity error each solver event removes")
+      << "\"\nset xlabel \"solver event (colour: iteration)\"\n"
+      << "set ylabel \"|velocity change wanted| (m/s)\"\nset logscale y\nunset colorbox\n"
+      << "plot \"" << gnuplotText(data.string())
+      << "\" using 1:($3 > 0 ? $3 : 1/0):2 with linespoints pt 7 ps 0.8 lc palette notitle\n";
   writeOrFail(script, scriptPath);
   runGnuplot(scriptPath);
   return "plot         " + png.string();

@@ -10,6 +10,7 @@
 
 namespace impulse2d::render {
 
+/// A view of the world: image size, the world point at its centre and the scale.
 struct Camera {
   int width = 800;             ///< pixels
   int height = 600;            ///< pixels

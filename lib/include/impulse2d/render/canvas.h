@@ -17,14 +17,20 @@ namespace impulse2d::render {
 
 /// 8-bit RGBA, not premultiplied; a = 255 is opaque.
 struct Color {
+  /// red
   std::uint8_t r = 0;
+  /// green
   std::uint8_t g = 0;
+  /// blue
   std::uint8_t b = 0;
+  /// alpha: 0 transparent, 255 opaque
   std::uint8_t a = 255;
 
+  /// Same four channels.
   bool operator==(const Color& other) const {
     return r == other.r && g == other.g && b == other.b && a == other.a;
   }
+  /// Any channel differs.
   bool operator!=(const Color& other) const { return !(*this == other); }
 };
 
@@ -33,20 +39,27 @@ static_assert(sizeof(Color) == 4, "a canvas's pixels are packed RGBA bytes, as P
 /// The same colour with alpha multiplied by `opacity` in [0, 1].
 Color withOpacity(Color color, double opacity);
 
+/// An image in memory that frames are drawn into, pixel (0, 0) at the top left.
 class Canvas {
  public:
   Canvas() = default;
+  /// A width × height image filled with `background`.
   Canvas(int width, int height, Color background = Color{255, 255, 255, 255});
 
+  /// in pixels
   int width() const { return width_; }
+  /// in pixels
   int height() const { return height_; }
+  /// Pixel (x, y), which must lie inside the canvas.
   Color& at(int x, int y) { return pixels_[std::size_t(y) * width_ + x]; }
+  /// Pixel (x, y), which must lie inside the canvas.
   const Color& at(int x, int y) const { return pixels_[std::size_t(y) * width_ + x]; }
   /// Row-major pixels, top row first: the layout PNG files use.
   const std::vector<Color>& pixels() const { return pixels_; }
 
   /// Resizes if needed and sets every pixel to `color`.
   void reset(int width, int height, Color color);
+  /// Sets every pixel to `color`.
   void fill(Color color);
   /// Mixes `color` into pixel (x, y) by coverage in [0, 1] ("over" compositing); ignores pixels
   /// outside the canvas.

@@ -58,17 +58,25 @@ double frictionUse(const Manifold& manifold);
 
 /// What a frame showed, for its legend: which body states and which arrow kinds.
 struct DrawnKinds {
+  /// by BodyState: a body drawn in it
   std::array<bool, kBodyStateCount> states{};
+  /// a normal force arrow
   bool normalForces = false;
+  /// a friction arrow inside the cone
   bool staticFriction = false;
+  /// a friction arrow on the cone
   bool dynamicFriction = false;
+  /// a velocity arrow
   bool velocities = false;
+  /// a friction gauge
   bool gauges = false;
 };
 
 /// What the heads-up line says.
 struct FrameInfo {
+  /// the scene's name
   std::string scene;
+  /// the solver's name
   std::string solver;
   long step = 0;        ///< steps taken
   double time = 0.0;    ///< s, simulated
@@ -104,6 +112,7 @@ void drawHeadsUp(Canvas& canvas, const std::vector<std::string>& lines,
 /// canvas is the camera's size plus the legend strip under it when the legend is on.
 class FrameRenderer {
  public:
+  /// Frames of `scene` seen by `camera`, drawn with `settings`.
   FrameRenderer(const Camera& camera, std::string scene, const RenderSettings& settings = {});
 
   /// The frame of a simulation as it stands. The first call fits the run's force scale to the
@@ -112,13 +121,17 @@ class FrameRenderer {
   /// Fits the force scale every later frame uses (fitForceScale), with the substep's length as
   /// the time an impulse acts (a world's manifolds hold its last substep's impulses).
   void fitForces(const Simulation& simulation);
+  /// The force scale the frames are drawn with.
   const ForceScale& forces() const { return forces_; }
   /// The frame of bodies and manifolds with the heads-up lines given (none: no heads-up).
   const Canvas& draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
                      const std::vector<std::string>& headsUp);
 
+  /// The camera, the scene name and the settings the frames are drawn with.
   const Camera& camera() const { return camera_; }
+  /// the scene's name
   const std::string& scene() const { return scene_; }
+  /// how frames look
   const RenderSettings& settings() const { return settings_; }
   /// The last frame drawn, for drawing more on top of it.
   Canvas& canvas() { return canvas_; }

@@ -10,7 +10,9 @@
 
 namespace impulse2d::render {
 
+/// One labelled frame of a side-by-side comparison.
 struct Panel {
+  /// the frame shown, owned by the caller
   const Canvas* frame = nullptr;
   std::string label;  ///< drawn in a bar above the frame, e.g. the solver's name
 };

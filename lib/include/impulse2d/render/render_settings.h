@@ -9,6 +9,7 @@ namespace impulse2d::render {
 /// Body colours by state (see BodyState in frame.h) and the colours of the overlays. The body
 /// colours are the Okabe-Ito palette, which stays distinguishable under colour blindness.
 struct Palette {
+  /// behind the scene
   Color background{250, 250, 247, 255};
   Color staticBody{160, 160, 160, 255};    ///< grey: never moves
   Color flyingBody{86, 180, 233, 255};     ///< sky blue: no contact points
@@ -16,20 +17,27 @@ struct Palette {
   Color touchingBody{204, 121, 167, 255};  ///< reddish purple: in contact, moving, not sliding
   Color slidingBody{230, 159, 0, 255};     ///< orange: a contact point slides
   Color sleepingBody{200, 205, 215, 255};  ///< pale grey-blue: asleep
+  /// bodies' edges
   Color outline{40, 40, 40, 255};
+  /// the line showing a body's turn
   Color rotationMark{20, 20, 20, 255};
   Color contactPoint{255, 255, 255, 255};  ///< a white dot ringed in the outline colour
+  /// contact normals
   Color contactNormal{60, 60, 60, 255};
+  /// normal force arrows
   Color normalImpulse{0, 90, 178, 255};
   Color staticFriction{120, 40, 160, 255};  ///< friction impulse inside the cone (sticking)
   Color dynamicFriction{220, 20, 60, 255};  ///< friction impulse on the cone (sliding)
+  /// velocity arrows
   Color velocity{20, 20, 20, 255};
   Color highlight{255, 0, 200, 255};  ///< the contact a trace frame is resolving
+  /// all text
   Color text{20, 20, 20, 255};
   Color labelBackground{255, 255, 255, 200};  ///< behind the heads-up line and labels
   Color sheetBackground{70, 70, 70, 255};     ///< between thumbnails and panels
   Color sheetLabel{240, 240, 236, 255};       ///< the bars of step numbers and panel labels
   Color gaugeBackground{255, 255, 255, 255};  ///< the empty part of a friction gauge
+  /// the legend strip
   Color legendBackground{236, 236, 230, 255};
 };
 
@@ -46,8 +54,11 @@ struct Overlays {
   bool legend = true;  ///< a strip under the scene: the colours and arrows used, the force scale
 };
 
+/// Every tunable number of the frames, with its default; sizes in pixels unless a unit is given.
 struct RenderSettings {
+  /// what is drawn in which colour
   Palette colours;
+  /// what is drawn besides the bodies
   Overlays overlays;
 
   /// m/s. A body in contact whose centre moves slower than this (and turns slower than
@@ -77,16 +88,24 @@ struct RenderSettings {
   /// Arrow sizes at textScale; a frame whose text is drawn larger (frameTextPerPixel) draws its
   /// arrows thicker in proportion: 1.8 times in an 800-pixel frame.
   double arrowWidth = 2.0;
+  /// pixels, at textScale
   double arrowHeadLength = 7.0;
+  /// pixels, at textScale
   double arrowHeadWidth = 6.0;
 
+  /// pixels: bodies' edges
   double outlineWidth = 1.0;
+  /// in pixels
   double rotationMarkWidth = 1.5;
+  /// in pixels
   double contactPointRadius = 3.0;
+  /// in pixels
   double contactNormalLength = 10.0;
+  /// in pixels
   double contactNormalWidth = 1.0;
   /// Radius of the ring round the contact a trace frame is resolving.
   double highlightRadius = 9.0;
+  /// pixels: the line width of the ring round the resolved contact
   double highlightWidth = 2.5;
 
   /// Font pixels per canvas pixel for labels on sheets and panels (stb_easy_font is ~7 px tall),
@@ -101,6 +120,7 @@ struct RenderSettings {
   /// text, so it shrinks with the frame like the text), just under the middle of each contact,
   /// filled to |Σλt| / (μ Σλn). 8 × 3.6 ≈ 29 pixels long in an 800-pixel frame.
   double gaugeLength = 8.0;
+  /// pixels per font pixel
   double gaugeThickness = 2.0;
   /// A gauge at or above 1 − this is on the limit (dynamic friction) and drawn in its colour.
   double gaugeLimitTolerance = 1e-3;
@@ -120,7 +140,9 @@ struct RenderSettings {
 
   /// Contact sheet: this many thumbnails, evenly spaced over the run, first and last included.
   int sheetThumbnails = 12;
+  /// thumbnails per row
   int sheetColumns = 4;
+  /// in pixels
   int sheetThumbnailWidth = 240;
   /// Thumbnails are at least this fraction of the frame's width, so the text of a wide frame (a
   /// comparison's panels side by side) reads as well as an 800-pixel frame's at 240 pixels; the

@@ -10,6 +10,7 @@
 
 namespace impulse2d::render {
 
+/// Watches one step of a simulation and writes a frame for every solver event in it.
 class TraceRecorder : public SolverObserver {
  public:
   /// Frames of the step `simulation` is taking go to `writer`, drawn with the camera, scene and

@@ -14,7 +14,9 @@ namespace impulse2d::render {
 
 /// Figures per frame: the column names (with units) and one row per frame written.
 struct FigureTable {
+  /// names, with units
   std::vector<std::string> columns;
+  /// one per frame, one value per column
   std::vector<std::vector<double>> rows;
 };
 
