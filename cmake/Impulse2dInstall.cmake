@@ -14,7 +14,8 @@ set(include_dir ${PROJECT_SOURCE_DIR}/lib/include/impulse2d)
 # a component's targets (and looks for its dependencies) only when it is asked for.
 install(TARGETS impulse2d EXPORT impulse2d-targets ARCHIVE LIBRARY RUNTIME)
 install(DIRECTORY ${include_dir} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        PATTERN render EXCLUDE PATTERN box2d EXCLUDE PATTERN scene_file.h EXCLUDE)
+        PATTERN render EXCLUDE PATTERN box2d EXCLUDE PATTERN scene_file.h EXCLUDE
+        PATTERN setting_ranges.h EXCLUDE)
 install(EXPORT impulse2d-targets NAMESPACE impulse2d:: DESTINATION ${IMPULSE2D_INSTALL_CMAKEDIR})
 set(IMPULSE2D_COMPONENTS "")
 foreach(part ${IMPULSE2D_PARTS})
@@ -29,7 +30,7 @@ foreach(part ${IMPULSE2D_PARTS})
 endforeach()
 if(IMPULSE2D_BUILD_SCENE)
   # A scene file carries its view (render/view.h, plain data), so scene_file.h includes it.
-  install(FILES ${include_dir}/scene/scene_file.h
+  install(FILES ${include_dir}/scene/scene_file.h ${include_dir}/scene/setting_ranges.h
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/impulse2d/scene)
   install(FILES ${include_dir}/render/view.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/impulse2d/render)
 endif()

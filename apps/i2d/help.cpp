@@ -102,8 +102,9 @@ its centroid, not the origin its vertices were given in), vx and vy in m/s, the 
 omega in rad/s, counter-clockwise.
 
 If a body's state becomes non-finite the run stops with
-  error: body NAME became non-finite at step N
-and exit code 1, keeping the CSV rows, frames and sheet of the steps before.
+  error: body NAME became non-finite at step N (solver S)
+and exit code 1, keeping the CSV rows, frames and sheet of the steps before. Bodies that start
+overlapping by more than the solver's allowed overlap are warned about before the run.
 
 exit codes: 0 success, 1 failure while running (non-finite state, unwritable file or frame
 directory or plot directory, --video or --animation mp4 without ffmpeg), 2 bad command line,
