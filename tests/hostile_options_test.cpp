@@ -90,8 +90,8 @@ TEST_CASE("a --panel missing its colon or an assignment's '=' is refused, exit 2
   const Outcome noEquals = i2d(compare + " --panel 'off: solver.warm_starting'", scratch);
   CHECK(noEquals.exitCode == 2);
   CHECK(noEquals.err ==
-        "error: option --panel needs section.key=value assignments after its label, not "
-        "'solver.warm_starting'\n");
+        "error: option --panel needs section.key=value, such as solver.velocity_iterations=12, "
+        "not 'solver.warm_starting'\n");
   CHECK_FALSE(fs::exists(scratch / "frames"));
   const Outcome labelOnly = i2d(compare +
                                     " --panel 'defaults' --panel 'cold: "

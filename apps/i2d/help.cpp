@@ -33,9 +33,11 @@ exit codes:
   0  success
   1  failure while running: a body became non-finite, a file or frame could not be written,
      --video without ffmpeg on PATH, a step with nothing to trace
-  2  bad command line: unknown command or option, missing or malformed value, bad --set
+  2  bad command line: unknown command or option, missing or malformed value, a --set or
+     --panel assignment not of the form section.key=value
   3  invalid scene: unreadable file, TOML syntax error, unknown key, wrong type, missing key,
-     number out of range, degenerate or non-convex polygon, unknown solver or shape, empty file
+     number out of range, degenerate or non-convex polygon, unknown solver or shape, empty file;
+     the same from a --set or --panel assignment
 
 errors are one line on stderr: "error: FILE:LINE:COLUMN: what is wrong" for a scene.
 )";

@@ -108,6 +108,18 @@ std::vector<std::string> splitList(const std::string& text, char separator,
   return items;
 }
 
+/// A --set or --panel assignment has the shape section.key=value; what the key and value mean is
+/// the scene reader's to judge (a refused value is an invalid scene, exit 3).
+void checkAssignment(const std::string& assignment, const std::string& option) {
+  const size_t equals = assignment.find('=');
+  const size_t dot = assignment.find('.');
+  if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
+    throw UsageError("option " + option +
+                     " needs section.key=value, such as solver.velocity_iterations=12, not '" +
+                     assignment + "'");
+  }
+}
+
 /// Every name makeSimulation accepts, as "a, b, c".
 std::string knownSolvers() {
   std::string names;
@@ -211,7 +223,10 @@ void addSceneHandlers(Handlers& handlers, SceneOptions& options, bool withSolver
     options.dt = parsePositive(value, "--dt");
     checkWorldRange(*options.dt, "--dt", "dt", value);
   };
-  handlers.options["--set"] = [&](const std::string& value) { options.settings.push_back(value); };
+  handlers.options["--set"] = [&](const std::string& value) {
+    checkAssignment(value, "--set");
+    options.settings.push_back(value);
+  };
 }
 
 /// --frames, --every, --video and the overlay switches.
@@ -267,10 +282,7 @@ PanelOption parsePanel(const std::string& text) {
   const std::string assignments = colon == std::string::npos ? "" : trim(text.substr(colon + 1));
   if (!assignments.empty()) panel.settings = splitList(assignments, ';', "--panel");
   for (const std::string& assignment : panel.settings) {
-    if (assignment.find('=') == std::string::npos) {
-      throw UsageError("option --panel needs section.key=value assignments after its label, not '" +
-                       assignment + "'");
-    }
+    checkAssignment(assignment, "--panel");
   }
   return panel;
 }

@@ -26,7 +26,7 @@ std::string findScene(const std::string& scene) {
   if (fs::exists(scene, error) || scene.find('/') != std::string::npos) return scene;
   const fs::path directory = installedScenes();
   if (directory.empty()) return scene;
-  for (const fs::path name : {fs::path(scene), fs::path(scene + ".toml")}) {
+  for (const fs::path& name : {fs::path(scene), fs::path(scene + ".toml")}) {
     const fs::path candidate = directory / name;
     if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
   }

@@ -12,13 +12,7 @@ namespace i2d {
 
 void applyOverrides(const SceneOptions& options, impulse2d::SceneFile& scene) {
   if (options.solver) scene.solver = *options.solver;
-  for (const std::string& assignment : options.settings) {
-    try {
-      impulse2d::applySetting(scene, assignment);
-    } catch (const impulse2d::SceneError& error) {
-      throw UsageError(error.what());
-    }
-  }
+  for (const std::string& assignment : options.settings) impulse2d::applySetting(scene, assignment);
   if (options.steps) scene.steps = *options.steps;
   if (options.dt) scene.world.dt = *options.dt;
 }
