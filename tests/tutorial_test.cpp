@@ -96,7 +96,7 @@ TEST_CASE("every command of the tutorial runs and prints what the page shows", "
       i2d_process::writeFile(scratch / block.name, block.text);
     }
   }
-  // The page's seven sections run at least this much; fewer means the blocks were not found.
+  // The page's six sections run at least this many; fewer means the blocks were not found.
   CHECK(commandsRun >= 8);
   CHECK(outputsChecked == commandsRun);
 }
