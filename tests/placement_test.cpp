@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "i2d_process.h"
 #include "impulse2d/scene/scene_file.h"
 
 using namespace impulse2d;
@@ -161,4 +162,18 @@ TEST_CASE("each misuse of 'on' is one located error", "[scene-file][on][errors]"
         "bad.toml:11:1: 'offset' places a body along the face it rests on; it needs on = \"name\"");
   CHECK(errorOf(kRamp + "[[body]]\nshape = \"box\"\nsize = [1, 1]\non = 3\n") ==
         "bad.toml:11:6: 'on' must be a string, not an integer");
+}
+
+TEST_CASE("i2d refuses a misplaced body with one located line and exit code 3",
+          "[scene-file][on][errors]") {
+  const i2d_process::Scratch scratch;
+  i2d_process::writeFile(scratch / "on.toml", kRamp +
+                                                  "[[body]]\nname = \"box\"\nshape = \"box\"\n"
+                                                  "size = [1, 1]\non = \"ramp \"\n");
+  const i2d_process::Outcome outcome = i2d_process::i2d("check " + (scratch / "on.toml"), scratch);
+  CHECK(outcome.exitCode == 3);
+  CHECK(outcome.out.empty());
+  CHECK(outcome.err == "error: " + (scratch / "on.toml") +
+                           ":12:6: 'on' names 'ramp ', and no body has that name (known: ramp, "
+                           "box)\n");
 }
