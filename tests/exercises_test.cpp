@@ -5,9 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <regex>
 #include <string>
 
 #include "doc_blocks.h"
+#include "i2d_process.h"
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/world.h"
 #include "solver_scenes.h"
@@ -194,4 +197,27 @@ TEST_CASE("exercise 11: the penetration bias removes β of the overlap beyond th
   auto unbiased = buildWorld(scene);
   solvers::runSteps(*unbiased, 120);
   CHECK(depth(*unbiased) > 0.049);
+}
+
+TEST_CASE("every i2d command the exercises give runs, on the page's scenes", "[exercises][docs]") {
+  namespace fs = std::filesystem;
+  const i2d_process::Scratch scratch;
+  fs::create_directory_symlink(IMPULSE2D_BINARY_DIR, scratch.path / "build");
+  fs::create_directory_symlink(IMPULSE2D_SOURCE_DIR "/demos", scratch.path / "demos");
+  for (const doc_blocks::Block& block : doc_blocks::readBlocks("docs/exercises.md")) {
+    if (!block.name.empty()) i2d_process::writeFile(scratch / block.name, block.text);
+  }
+  // The commands are inline code, `build/apps/i2d ...`, which may wrap over lines.
+  const std::string page = i2d_process::readFile(IMPULSE2D_SOURCE_DIR "/docs/exercises.md");
+  const std::regex command("`(build/apps/i2d [^`]*)`");
+  int commands = 0;
+  for (auto match = std::sregex_iterator(page.begin(), page.end(), command);
+       match != std::sregex_iterator(); ++match) {
+    const std::string line = std::regex_replace((*match)[1].str(), std::regex("\\s+"), " ");
+    const std::string shell = "cd " + scratch.path.string() + " && " + line + " >/dev/null 2>&1";
+    INFO(line);
+    CHECK(std::system(shell.c_str()) == 0);
+    ++commands;
+  }
+  CHECK(commands >= 10);
 }
