@@ -8,10 +8,11 @@
 
 namespace impulse2d {
 
+/// The values a numeric setting may take: from `lowest` (included or not) to `highest` (included).
 struct SettingRange {
-  double lowest = 0.0;
+  double lowest = 0.0;         ///< the least value, or the open end when !lowestIncluded
   bool lowestIncluded = true;  ///< [lowest, ...] or (lowest, ...]
-  double highest = 0.0;
+  double highest = 0.0;        ///< the greatest value, always included
   /// Why the upper bound is there, for keys that would make a run unbounded; empty otherwise.
   std::string bound;
 };
