@@ -43,7 +43,8 @@ SceneFile panelScene(const SceneFile& file, const SceneOptions& common, const Pa
 
 std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
   const SceneFile file = impulse2d::loadSceneFile(options.scene.scenePath);
-  const Camera camera = sceneCamera(file, settings);  // --set changes no body: one view for all
+  const Camera camera =
+      sceneCamera(file, options.frames, settings);  // --set changes no body: one view for all
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {
     PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, nullptr, {}};
@@ -110,10 +111,10 @@ std::vector<std::string> plotPanels(const std::string& directory, const std::str
 }
 
 void writePanels(std::vector<PanelRun>& runs, FrameWriter& writer, const RenderSettings& settings) {
+  std::vector<Frame> frames;
+  for (PanelRun& run : runs) frames.push_back(run.renderer->draw(*run.simulation));
   std::vector<Panel> panels;
-  for (PanelRun& run : runs) {
-    panels.push_back({&run.renderer->draw(*run.simulation), run.label});
-  }
+  for (std::size_t k = 0; k < runs.size(); ++k) panels.push_back({&frames[k], runs[k].label});
   writer.write(runs.front().simulation->stepCount(), composePanels(panels, settings));
 }
 
@@ -137,7 +138,7 @@ int compareCommand(const CompareOptions& options) {
   std::vector<PanelRun> runs = startPanels(options, settings);
   const SceneFile& first = runs.front().scene;
   FrameWriter writer(*options.frames.directory, first.name, options.every,
-                     comparePrefix(first.name), settings);
+                     comparePrefix(first.name), settings, options.frames.format);
   std::cout << "scene        " << first.name << " (" << runs.size() << " panels, " << first.steps
             << " steps)\n";
   for (long step = 0; step <= first.steps; ++step) {
@@ -148,9 +149,13 @@ int compareCommand(const CompareOptions& options) {
   writer.writeContactSheet();
   printPanelSummary(runs);
   for (const std::string& line : describeFrames(writer)) std::cout << line << "\n";
+  std::vector<PlotSeries> series;
+  for (const PanelRun& run : runs) series.push_back({run.label, run.figures});
+  const std::vector<ViewerPlot> plots = writeViewerPlots(
+      writer.directory(), writer.prefix(), series, hasLoads(*runs.front().simulation));
   for (const std::string& line :
        writeFrameExtras(options.frames, writer, first.name, 1.0 / (first.world.dt * options.every),
-                        panelTable(runs, writer.steps()))) {
+                        panelTable(runs, writer.steps()), plots, first.world.dt)) {
     std::cout << line << "\n";
   }
   if (options.plots) {
