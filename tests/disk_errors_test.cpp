@@ -67,7 +67,7 @@ Image greyImage() {
 
 /// A frame whose picture is one grey rectangle.
 Frame greyFrame() {
-  Frame frame{Picture(64, 48), Picture(64, 48), "grey"};
+  Frame frame{Picture(64, 48), Vec2::Zero(), Vec2(64.0, 48.0), "grey"};
   Drawing(frame.picture).rectangle(Vec2::Zero(), Vec2(64.0, 48.0), Color{128, 128, 128, 255});
   return frame;
 }

@@ -25,9 +25,9 @@ Color numberColour(int number) {
 
 /// A solid frame of that colour.
 Frame numberedFrame(int number) {
-  Frame frame{Picture(160, 120), Picture(160, 120), "frame " + std::to_string(number)};
+  Frame frame{Picture(160, 120), Vec2::Zero(), Vec2(160.0, 120.0),
+              "frame " + std::to_string(number)};
   Drawing(frame.picture).rectangle(Vec2::Zero(), Vec2(160.0, 120.0), numberColour(number));
-  Drawing(frame.scene).rectangle(Vec2::Zero(), Vec2(160.0, 120.0), numberColour(number));
   return frame;
 }
 

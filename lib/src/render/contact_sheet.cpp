@@ -62,7 +62,8 @@ Picture drawContactSheet(const SheetLayout& layout, const std::vector<Frame>& fr
   for (std::size_t k = 0; k < layout.frames.size(); ++k) {
     const Frame& frame = frames[std::size_t(layout.frames[k])];
     const Vec2 corner(layout.thumbnailX(int(k)), layout.thumbnailY(int(k)));
-    drawing.place(frame.scene, corner, double(layout.thumbnailWidth) / frame.scene.width());
+    drawing.placePart(frame.picture, frame.sceneCorner, frame.sceneSize, corner,
+                      layout.thumbnailWidth / frame.sceneSize.x());
     const Vec2 label = corner + Vec2(0.0, layout.thumbnailHeight);
     drawing.rectangle(label, Vec2(layout.thumbnailWidth, layout.labelHeight),
                       settings.colours.sheetLabel);

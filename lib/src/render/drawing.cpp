@@ -24,7 +24,7 @@ constexpr double kSubscriptDrop = 0.22;
 
 /// Circles up to this radius (pixels) are drawn as polygons of kSmallCircleSides sides.
 constexpr double kSmallCircle = 6.0;
-constexpr int kSmallCircleSides = 10;
+constexpr int kSmallCircleSides = 8;
 
 /// A piece of text at one level: the baseline's or a subscript.
 struct Run {
@@ -218,7 +218,13 @@ void Drawing::rectangle(const Vec2& corner, const Vec2& size, Color colour) {
 }
 
 void Drawing::line(const Vec2& from, const Vec2& to, double width, Color colour) {
-  add(true, colour, width, {{from, to}, 0.0, false});
+  // A square-ended line is a thin rectangle, and filling one costs less than stroking.
+  const double length = (to - from).norm();
+  if (length > 0.0) {
+    const Vec2 along = (to - from) / length;
+    const Vec2 side = 0.5 * width * Vec2(-along.y(), along.x());
+    add(false, colour, 0.0, {{from + side, to + side, to - side, from - side}});
+  }
   log(DrawnShape::Kind::Line, {from, to}, colour, width);
 }
 
@@ -284,15 +290,25 @@ double Drawing::textWidth(const std::string& text, double size) {
 }
 
 void Drawing::place(const Picture& picture, const Vec2& corner, double scale) {
+  placePart(picture, Vec2::Zero(), Vec2(picture.width(), picture.height()), corner, scale);
+}
+
+void Drawing::placePart(const Picture& picture, const Vec2& from, const Vec2& size,
+                        const Vec2& corner, double scale) {
   flush();
   cairo_save(cairo_);
   cairo_translate(cairo_, corner.x(), corner.y());
   cairo_scale(cairo_, scale, scale);
-  cairo_rectangle(cairo_, 0.0, 0.0, picture.width(), picture.height());
+  cairo_rectangle(cairo_, 0.0, 0.0, size.x(), size.y());
   cairo_clip(cairo_);
-  cairo_set_source_surface(cairo_, picture.surface(), 0.0, 0.0);
+  cairo_set_source_surface(cairo_, picture.surface(), -from.x(), -from.y());
   cairo_paint(cairo_);
   cairo_restore(cairo_);
+}
+
+void Drawing::translate(const Vec2& offset) {
+  flush();
+  cairo_translate(cairo_, offset.x(), offset.y());
 }
 
 const char* extensionOf(ImageFormat format) {
@@ -343,29 +359,23 @@ Color unpremultiplied(std::uint32_t pixel) {
   return Color{channel(16), channel(8), channel(0), std::uint8_t(alpha)};
 }
 
-/// The PNG of an opaque image surface, its RGB scanlines taken straight from Cairo's words.
-std::vector<std::uint8_t> opaquePng(cairo_surface_t* surface) {
+/// The surface's rows as RGB scanlines (each row a filter byte 0, then R, G, B per pixel), taken
+/// straight from Cairo's words; false, leaving `raw` unfinished, at the first pixel that is not
+/// opaque.
+bool opaqueScanlines(cairo_surface_t* surface, std::vector<std::uint8_t>& raw) {
   const int width = cairo_image_surface_get_width(surface);
   const int height = cairo_image_surface_get_height(surface);
-  std::vector<std::uint8_t> raw((std::size_t(width) * 3 + 1) * std::size_t(height));
+  raw.resize((std::size_t(width) * 3 + 1) * std::size_t(height));
   std::uint8_t* out = raw.data();
   for (int y = 0; y < height; ++y) {
     *out++ = 0;
     const std::uint32_t* row = surfaceRow(surface, y);
     for (int x = 0; x < width; ++x) {
-      *out++ = std::uint8_t(row[x] >> 16);
-      *out++ = std::uint8_t(row[x] >> 8);
-      *out++ = std::uint8_t(row[x]);
-    }
-  }
-  return encodeScanlines(width, height, 3, raw);
-}
-
-bool opaqueSurface(cairo_surface_t* surface) {
-  for (int y = 0; y < cairo_image_surface_get_height(surface); ++y) {
-    const std::uint32_t* row = surfaceRow(surface, y);
-    for (int x = 0; x < cairo_image_surface_get_width(surface); ++x) {
-      if ((row[x] >> 24) != 255) return false;
+      const std::uint32_t pixel = row[x];
+      if ((pixel >> 24) != 255) return false;
+      *out++ = std::uint8_t(pixel >> 16);
+      *out++ = std::uint8_t(pixel >> 8);
+      *out++ = std::uint8_t(pixel);
     }
   }
   return true;
@@ -384,14 +394,35 @@ Image rasterise(const Picture& picture, double scale) {
   return image;
 }
 
-void writePicture(const std::filesystem::path& path, const Picture& picture, ImageFormat format) {
+PictureWriter::PictureWriter() : encoder_(std::make_shared<PngEncoder>()) {}
+
+void PictureWriter::writePng(const std::filesystem::path& path, const Picture& picture) {
+  const int width = picture.width();
+  const int height = picture.height();
+  if (!surface_ || cairo_image_surface_get_width(surface_.get()) != width ||
+      cairo_image_surface_get_height(surface_.get()) != height) {
+    surface_.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height),
+                   cairo_surface_destroy);
+  }
+  cairo_t* cairo = cairo_create(surface_.get());
+  cairo_set_operator(cairo, CAIRO_OPERATOR_CLEAR);  // the last picture goes
+  cairo_paint(cairo);
+  cairo_set_operator(cairo, CAIRO_OPERATOR_OVER);
+  cairo_set_source_surface(cairo, picture.surface(), 0.0, 0.0);
+  cairo_paint(cairo);
+  cairo_destroy(cairo);
+  cairo_surface_flush(surface_.get());
+  if (opaqueScanlines(surface_.get(), scanlines_)) {
+    writeFileAtomically(path, encoder_->encode(width, height, 3, scanlines_));
+  } else {
+    render::writePng(path, rasterise(picture));
+  }
+}
+
+void PictureWriter::write(const std::filesystem::path& path, const Picture& picture,
+                          ImageFormat format) {
   if (format == ImageFormat::Png) {
-    const auto surface = paintedImage(picture, 1.0);
-    if (opaqueSurface(surface.get())) {
-      writeFileAtomically(path, opaquePng(surface.get()));
-    } else {
-      writePng(path, rasterise(picture));
-    }
+    writePng(path, picture);
     return;
   }
   std::filesystem::path temporary = path;
@@ -403,6 +434,10 @@ void writePicture(const std::filesystem::path& path, const Picture& picture, Ima
     throw RenderError("cannot rename '" + temporary.string() + "' to '" + path.string() +
                       "': " + error.message());
   }
+}
+
+void writePicture(const std::filesystem::path& path, const Picture& picture, ImageFormat format) {
+  PictureWriter().write(path, picture, format);
 }
 
 }  // namespace impulse2d::render

@@ -90,7 +90,7 @@ void FrameWriter::removeEarlierFrames() const {
 
 std::filesystem::path FrameWriter::write(long step, const Frame& frame, bool preferred) {
   const std::filesystem::path path = framePath(frameCount());
-  writePicture(path, frame.picture, format_);
+  pictures_.write(path, frame.picture, format_);
   steps_.push_back(step);
   frames_.push_back(frame);
   preferred_.push_back(preferred);
@@ -101,9 +101,9 @@ std::filesystem::path FrameWriter::writeContactSheet() const {
   if (steps_.empty()) {
     throw RenderError("no frames in '" + directory_.string() + "' to make a contact sheet of");
   }
-  const Picture& scene = frames_.front().scene;
+  const Vec2& scene = frames_.front().sceneSize;
   const SheetLayout layout = contactSheetLayout(chooseFrames(preferred_, settings_.sheetThumbnails),
-                                                scene.width(), scene.height(), settings_);
+                                                int(scene.x()), int(scene.y()), settings_);
   writePicture(sheetPath(), drawContactSheet(layout, frames_, settings_), format_);
   return sheetPath();
 }

@@ -53,7 +53,8 @@ Frame composePanels(const std::vector<Panel>& panels, const RenderSettings& sett
                  settings.colours.text);
     drawing.place(panels[std::size_t(k)].frame->picture, corner + Vec2(0.0, label));
   }
-  return Frame{image, image, panels.front().frame->caption};
+  return Frame{image, Vec2::Zero(), Vec2(image.width(), image.height()),
+               panels.front().frame->caption};
 }
 
 }  // namespace impulse2d::render

@@ -20,9 +20,6 @@ namespace {
 /// Fast deflate: frames are flat colours, which level 1 already packs well.
 constexpr int kCompressionLevel = 1;
 
-/// A libdeflate compressor that frees itself.
-using Compressor = std::unique_ptr<libdeflate_compressor, void (*)(libdeflate_compressor*)>;
-
 bool opaque(const Image& image) {
   return std::all_of(image.pixels().begin(), image.pixels().end(),
                      [](const Color& pixel) { return pixel.a == 255; });
@@ -60,17 +57,6 @@ std::vector<std::uint8_t> scanlines(const Image& image, int channels) {
   return raw;
 }
 
-/// The scanlines in a zlib stream, as PNG's IDAT holds them.
-std::vector<std::uint8_t> deflated(const std::vector<std::uint8_t>& raw) {
-  const Compressor compressor(libdeflate_alloc_compressor(kCompressionLevel),
-                              libdeflate_free_compressor);
-  if (!compressor) throw RenderError("cannot start compressing an image: out of memory");
-  std::vector<std::uint8_t> packed(libdeflate_zlib_compress_bound(compressor.get(), raw.size()));
-  packed.resize(libdeflate_zlib_compress(compressor.get(), raw.data(), raw.size(), packed.data(),
-                                         packed.size()));
-  return packed;
-}
-
 /// Writes the bytes to path; on any error removes what was written and throws naming the cause.
 void writeFile(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -85,23 +71,45 @@ void writeFile(const std::filesystem::path& path, const std::vector<std::uint8_t
 
 }  // namespace
 
-std::vector<std::uint8_t> encodeScanlines(int width, int height, int channels,
-                                          const std::vector<std::uint8_t>& scanlines) {
+PngEncoder::PngEncoder()
+    : compressor_(libdeflate_alloc_compressor(kCompressionLevel), libdeflate_free_compressor) {
+  if (!compressor_) throw RenderError("cannot start compressing images: out of memory");
+}
+
+const std::vector<std::uint8_t>& PngEncoder::encode(int width, int height, int channels,
+                                                    const std::vector<std::uint8_t>& scanlines) {
   std::vector<std::uint8_t> header;
   appendWord(header, std::uint32_t(width));
   appendWord(header, std::uint32_t(height));
   // 8 bits per channel; colour type 2 (RGB) or 6 (RGBA); deflate; filters by row; no interlace.
   header.insert(header.end(), {8, std::uint8_t(channels == 4 ? 6 : 2), 0, 0, 0});
-  std::vector<std::uint8_t> file{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  appendChunk(file, "IHDR", header);
-  appendChunk(file, "IDAT", deflated(scanlines));
-  appendChunk(file, "IEND", {});
-  return file;
+  file_.assign({0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'});
+  appendChunk(file_, "IHDR", header);
+  // IDAT: deflated straight into the file, then its length and CRC filled in.
+  const std::size_t start = file_.size();
+  const std::size_t bound = libdeflate_zlib_compress_bound(compressor_.get(), scanlines.size());
+  file_.resize(start + 8 + bound);
+  const std::size_t packed = libdeflate_zlib_compress(
+      compressor_.get(), scanlines.data(), scanlines.size(), file_.data() + start + 8, bound);
+  file_.resize(start + 8 + packed);
+  const std::uint8_t lengthAndType[8] = {std::uint8_t(packed >> 24),
+                                         std::uint8_t(packed >> 16),
+                                         std::uint8_t(packed >> 8),
+                                         std::uint8_t(packed),
+                                         'I',
+                                         'D',
+                                         'A',
+                                         'T'};
+  std::copy(lengthAndType, lengthAndType + 8, file_.begin() + std::ptrdiff_t(start));
+  appendWord(file_, libdeflate_crc32(0, file_.data() + start + 4, packed + 4));
+  appendChunk(file_, "IEND", {});
+  return file_;
 }
 
 std::vector<std::uint8_t> encodePng(const Image& image) {
   const int channels = opaque(image) ? 3 : 4;
-  return encodeScanlines(image.width(), image.height(), channels, scanlines(image, channels));
+  PngEncoder encoder;
+  return encoder.encode(image.width(), image.height(), channels, scanlines(image, channels));
 }
 
 void writeFileAtomically(const std::filesystem::path& path,

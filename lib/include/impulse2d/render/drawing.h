@@ -8,6 +8,7 @@
 // drawn from the font as they are.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -20,6 +21,8 @@ using cairo_t = struct _cairo;
 using cairo_surface_t = struct _cairo_surface;
 
 namespace impulse2d::render {
+
+class PngEncoder;
 
 /// One drawing call as a test reads it back: what was drawn, where (pixels), in which colour, and
 /// the role it was drawn for (Drawing::setRole: "body", "normal force", "load", ...).
@@ -93,6 +96,12 @@ class Drawing {
   /// Draws `picture` with its top left corner at `corner`, scaled by `scale`, clipped to
   /// its own size.
   void place(const Picture& picture, const Vec2& corner, double scale = 1.0);
+  /// Draws the part of `picture` from `from` of size `size` (pixels of the picture) with its top
+  /// left corner at `corner`, scaled by `scale`.
+  void placePart(const Picture& picture, const Vec2& from, const Vec2& size, const Vec2& corner,
+                 double scale);
+  /// Moves the origin of what follows by `offset` pixels.
+  void translate(const Vec2& offset);
 
  private:
   /// One outline of a batch: a closed polygon, a circle, or an open line.
@@ -129,8 +138,23 @@ const char* extensionOf(ImageFormat format);
 /// The picture's pixels, at `scale` times its size.
 Image rasterise(const Picture& picture, double scale = 1.0);
 
-/// Writes the picture as PNG, SVG or PDF: first to `path` + ".tmp", then renamed to `path`, so a
-/// reader never sees a half-written file. Throws RenderError (png.h) naming the path.
+/// Writes pictures as PNG, SVG or PDF: first to `path` + ".tmp", then renamed to `path`, so a
+/// reader never sees a half-written file. Throws RenderError (png.h) naming the path. It keeps
+/// its image surface and buffers from one PNG to the next, so a run's frames reuse memory.
+class PictureWriter {
+ public:
+  PictureWriter();
+  void write(const std::filesystem::path& path, const Picture& picture, ImageFormat format);
+
+ private:
+  void writePng(const std::filesystem::path& path, const Picture& picture);
+
+  std::shared_ptr<cairo_surface_t> surface_;  ///< an image surface of the last size written
+  std::vector<std::uint8_t> scanlines_;
+  std::shared_ptr<PngEncoder> encoder_;
+};
+
+/// One picture written by a PictureWriter of its own.
 void writePicture(const std::filesystem::path& path, const Picture& picture, ImageFormat format);
 
 }  // namespace impulse2d::render

@@ -112,16 +112,19 @@ DrawnKinds drawScene(Drawing& drawing, const Camera& camera, const std::vector<B
 /// An arrow from world point `at` along the world displacement `vector` (m), starting `shift`
 /// pixels off that point, cut to settings.maxArrowLength of the scene and left out under
 /// settings.minArrowLength: how forces (scaled by ForceScale) and velocities (by velocityScale)
-/// are drawn. Returns the arrow's pixel length (0: not drawn).
+/// are drawn. With `halo`, a pale rim under it keeps it visible over bodies (contact forces,
+/// which stand beside the bodies' edges and are many, go without). Returns the arrow's pixel
+/// length (0: not drawn).
 double drawWorldArrow(Drawing& drawing, const Camera& camera, const Vec2& at, const Vec2& vector,
-                      Color color, const RenderSettings& settings,
-                      const Vec2& shift = Vec2::Zero());
+                      Color color, const RenderSettings& settings, const Vec2& shift = Vec2::Zero(),
+                      bool halo = true);
 
-/// A frame: the whole picture, and its scene area alone (a thumbnail's picture), with the
-/// caption a thumbnail carries.
+/// A frame: its picture, where the scene area lies in it (a thumbnail shows that part alone),
+/// and the caption a thumbnail carries.
 struct Frame {
   Picture picture;
-  Picture scene;
+  Vec2 sceneCorner = Vec2::Zero();  ///< pixels: the scene area's top left corner
+  Vec2 sceneSize = Vec2::Zero();    ///< pixels
   std::string caption;
 };
 

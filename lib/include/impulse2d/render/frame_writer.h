@@ -63,6 +63,7 @@ class FrameWriter {
   int every_ = 1;
   RenderSettings settings_;
   ImageFormat format_ = ImageFormat::Png;
+  PictureWriter pictures_;
   std::vector<long> steps_;
   std::vector<Frame> frames_;
   std::vector<bool> preferred_;

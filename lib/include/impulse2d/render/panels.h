@@ -23,7 +23,8 @@ int panelLabelHeight(const RenderSettings& settings, double textSize);
 int panelColumns(int count, int width, int height, const RenderSettings& settings);
 
 /// The panels in that grid, left to right and top to bottom, settings.spacing apart. All panels
-/// are the size of the first. The frame's scene is the whole grid, so a sheet shows every panel.
+/// are the size of the first. The frame's scene area is the whole grid, so a sheet shows every
+/// panel.
 Frame composePanels(const std::vector<Panel>& panels, const RenderSettings& settings);
 
 }  // namespace impulse2d::render

@@ -3,10 +3,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include "impulse2d/render/image.h"
+
+struct libdeflate_compressor;
 
 namespace impulse2d::render {
 
@@ -21,10 +24,20 @@ class RenderError : public std::runtime_error {
 /// stb_image_write took 20 to 60 ms, for a smaller file (benchmarks/render_benchmark prints the
 /// time).
 std::vector<std::uint8_t> encodePng(const Image& image);
-/// PNG bytes of rows already laid out as PNG scanlines: each row a filter byte (0) and its
-/// pixels' `channels` (3: RGB, 4: RGBA) bytes.
-std::vector<std::uint8_t> encodeScanlines(int width, int height, int channels,
+/// Encodes PNGs, keeping its compressor and output buffer from one image to the next: a run's
+/// frames then reuse memory instead of faulting in fresh pages for every frame.
+class PngEncoder {
+ public:
+  PngEncoder();
+  /// The PNG bytes of rows already laid out as PNG scanlines: each row a filter byte (0) and its
+  /// pixels' `channels` (3: RGB, 4: RGBA) bytes. Valid until the next call.
+  const std::vector<std::uint8_t>& encode(int width, int height, int channels,
                                           const std::vector<std::uint8_t>& scanlines);
+
+ private:
+  std::unique_ptr<libdeflate_compressor, void (*)(libdeflate_compressor*)> compressor_;
+  std::vector<std::uint8_t> file_;
+};
 /// Writes bytes to `path` + ".tmp", then renames it to `path`; on failure removes what was
 /// written and throws RenderError naming the cause.
 void writeFileAtomically(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes);

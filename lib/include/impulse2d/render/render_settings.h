@@ -27,7 +27,7 @@ struct Palette {
   Color frictionLimit{20, 20, 20, 255};     ///< the μN mark across a friction arrow
   Color load{0, 0, 0, 255};                 ///< applied loads (and weights), black
   Color velocity{90, 90, 90, 255};          ///< body and sliding velocities, dark grey
-  Color arrowHalo{255, 255, 255, 200};      ///< under every arrow, so it shows over bodies
+  Color arrowHalo{255, 255, 255, 200};      ///< under loads and velocities, to show over bodies
   Color highlight{204, 0, 153, 255};        ///< the contact a trace frame is resolving
   Color text{20, 20, 20, 255};
   Color stripBackground{236, 236, 230, 255};  ///< the heads-up and legend strips
