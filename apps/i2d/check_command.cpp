@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "failures.h"
 #include "impulse2d/scene/scene_file.h"
+#include "scene_setup.h"
 
 namespace i2d {
 namespace {
@@ -100,6 +101,7 @@ int checkCommand(const CheckOptions& options) {
                 impulse2d::solverSettingFields(scene.solverSettings, scene.solver));
   printBodyCounts(scene.bodies);
   for (const BodyDef& body : scene.bodies) printBody(body);
+  warnAboutStartingOverlaps(scene, std::cerr);
   return kSuccess;
 }
 

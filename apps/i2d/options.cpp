@@ -10,6 +10,7 @@
 
 #include "failures.h"
 #include "impulse2d/box2d/box2d_simulation.h"
+#include "impulse2d/scene/setting_ranges.h"
 
 namespace i2d {
 namespace {
@@ -72,6 +73,18 @@ double parsePositive(const std::string& text, const std::string& option) {
     throw UsageError("option " + option + " needs a finite number > 0, not '" + text + "'");
   }
   return value;
+}
+
+/// An option that stands for a [world] setting (--steps, --dt, --trace-step's steps) takes
+/// the setting's range from the same table as the scene file.
+void checkWorldRange(double value, const std::string& option, const std::string& key,
+                     const std::string& text) {
+  const std::optional<impulse2d::SettingRange> range = impulse2d::findSettingRange("world", key);
+  if (range && !impulse2d::inSettingRange(value, *range)) {
+    throw UsageError("option " + option + " " +
+                     impulse2d::describeSettingRange(*range, key == "steps", value) + ", not '" +
+                     text + "'");
+  }
 }
 
 std::string trim(const std::string& text) {
@@ -194,19 +207,20 @@ void addSceneHandlers(Handlers& handlers, SceneOptions& options, bool withSolver
   }
   handlers.options["--steps"] = [&](const std::string& value) {
     options.steps = parseInteger(value, "--steps", 0);
+    checkWorldRange(*options.steps, "--steps", "steps", value);
   };
   handlers.options["--dt"] = [&](const std::string& value) {
     options.dt = parsePositive(value, "--dt");
+    checkWorldRange(*options.dt, "--dt", "dt", value);
   };
   handlers.options["--set"] = [&](const std::string& value) { options.settings.push_back(value); };
 }
 
-/// The largest frame --size accepts, in pixels: 8K UHD, 33 million pixels.
-constexpr long kMaxFramePixels = 7680L * 4320L;
 /// The smallest side --size accepts: room for the strips and a scene.
 constexpr int kMinFrameSide = 160;
 
-/// --size WxH: two integers of at least kMinFrameSide, at most kMaxFramePixels together.
+/// --size WxH: two integers of at least kMinFrameSide, at most the frame pixel limit a scene's
+/// [render] table has (impulse2d::kMostFramePixels) together.
 FrameSize parseSize(const std::string& text) {
   const size_t x = text.find('x');
   const std::string usage =
@@ -221,9 +235,9 @@ FrameSize parseSize(const std::string& text) {
     throw UsageError(usage);
   }
   if (size.width < kMinFrameSide || size.height < kMinFrameSide ||
-      long(size.width) * size.height > kMaxFramePixels) {
+      long(size.width) * size.height > impulse2d::kMostFramePixels) {
     throw UsageError("option --size: each side at least " + std::to_string(kMinFrameSide) +
-                     " pixels and at most " + std::to_string(kMaxFramePixels) +
+                     " pixels and at most " + std::to_string(impulse2d::kMostFramePixels) +
                      " pixels in all, not '" + text + "'");
   }
   return size;
@@ -291,8 +305,20 @@ PanelOption parsePanel(const std::string& text) {
   if (panel.label.empty()) {
     throw UsageError("option --panel needs 'LABEL: section.key=value; ...', not '" + text + "'");
   }
+  if (colon == std::string::npos && text.find('=') != std::string::npos) {
+    throw UsageError(
+        "option --panel needs a colon after its label, 'LABEL: section.key=value; "
+        "...', not '" +
+        text + "'");
+  }
   const std::string assignments = colon == std::string::npos ? "" : trim(text.substr(colon + 1));
   if (!assignments.empty()) panel.settings = splitList(assignments, ';', "--panel");
+  for (const std::string& assignment : panel.settings) {
+    if (assignment.find('=') == std::string::npos) {
+      throw UsageError("option --panel needs section.key=value assignments after its label, not '" +
+                       assignment + "'");
+    }
+  }
   return panel;
 }
 
@@ -305,6 +331,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
   handlers.options["--contacts"] = [&](const std::string& value) { options.contactsPath = value; };
   handlers.options["--trace-step"] = [&](const std::string& value) {
     options.traceStep = parseInteger(value, "--trace-step", 1);
+    checkWorldRange(*options.traceStep, "--trace-step", "steps", value);
   };
   handlers.options["--error-vs-reference"] = [&](const std::string& value) {
     options.errorVsReferencePath = value;
