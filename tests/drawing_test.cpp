@@ -13,6 +13,7 @@
 #include "impulse2d/render/frame.h"
 #include "impulse2d/render/legend.h"
 #include "impulse2d/render/png.h"
+#include "impulse2d/render/trace.h"
 #include "render_fixtures.h"
 
 using namespace impulse2d;
@@ -220,4 +221,45 @@ TEST_CASE("the PNG and the SVG of one frame agree", "[frame][svg][png]") {
   const Vec2 centre =
       renderer.camera().toPixels(Vec2(0.1, 0.6)) + Vec2(0.0, renderer.camera().headsUpHeight);
   CHECK(png.at(int(centre.x()), int(centre.y())) == resting);
+}
+
+TEST_CASE("a rotation mark stays short on a long plank", "[frame][rotation]") {
+  test::FixedSimulation simulation = test::boxOnGround();
+  simulation.bodyList[1] =
+      makeBody("plank", BodyType::Dynamic, makeBox(5.0, 0.2), 1.0, Vec2(0.0, 0.1), 0.0);
+  RenderSettings settings;
+  FrameRenderer renderer(fitCamera(simulation.bodies(), ViewDef{}, settings), "plank", settings);
+  DrawingLog log;
+  renderer.setLog(&log);
+  renderer.draw(simulation);
+  const std::vector<DrawnShape> marks = withRole(log, "rotation mark");
+  REQUIRE(marks.size() == 1);
+  // Half the plank would be 2.5 m; the mark stops at 1.5 text sizes.
+  CHECK(length(marks[0]) == Approx(settings.rotationMarkLength * renderer.camera().textSize));
+  CHECK(2.5 * renderer.camera().scale > 2.0 * length(marks[0]));
+}
+
+TEST_CASE("a trace frame draws the event's impulse at the run's force scale", "[trace][forces]") {
+  const fs::path root = test::scratchDirectory("trace_scale");
+  test::FixedSimulation simulation = test::boxOnGround();
+  SolverEvent event;
+  event.manifold = 0;
+  event.point = 1;
+  event.desiredChange = 0.1;
+  event.normalImpulse = 0.02;
+  simulation.events.push_back(event);
+  RenderSettings settings;
+  FrameRenderer renderer(fitCamera(simulation.bodies(), ViewDef{}, settings), "box", settings);
+  renderer.fitForces(simulation);
+  const double pixelsPerNewton = renderer.forces().metresPerNewton * renderer.camera().scale;
+  DrawingLog log;
+  renderer.setLog(&log);
+  const FrameWriter writer = traceStep(simulation, 1, renderer, root);
+  REQUIRE(writer.frameCount() == 1);
+  std::vector<DrawnShape> impulses;
+  for (const DrawnShape& shape : withRole(log, "highlight")) {
+    if (shape.kind == DrawnShape::Kind::Arrow) impulses.push_back(shape);
+  }
+  REQUIRE(impulses.size() == 1);
+  CHECK(length(impulses[0]) == Approx(0.02 / renderer.forces().dt * pixelsPerNewton).epsilon(1e-9));
 }

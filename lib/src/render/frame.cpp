@@ -78,7 +78,11 @@ void drawBody(Drawing& drawing, const Camera& camera, const Body& body, Color fi
   }
   if (settings.overlays.rotationMarks && !body.isStatic()) {
     drawing.setRole("rotation mark");
-    const Vec2 edge = camera.toPixels(body.toWorld(Vec2(rotationMarkReach(body.shape), 0.0)));
+    // To the edge, but no longer than rotationMarkLength: on a long plank a mark to its end
+    // would read as a crack.
+    const double longest = settings.rotationMarkLength * camera.textSize / camera.scale;  // m
+    const double reach = std::min(rotationMarkReach(body.shape), longest);
+    const Vec2 edge = camera.toPixels(body.toWorld(Vec2(reach, 0.0)));
     drawing.line(centre, edge, settings.rotationMarkWidth, settings.colours.rotationMark);
   }
 }

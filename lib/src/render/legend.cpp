@@ -102,7 +102,7 @@ std::vector<Entry> arrowEntries(const DrawnKinds& drawn, const ForceScale& force
   add(drawn.slidingVelocities, Swatch::Arrow, colours.velocity, "slip velocity");
   add(drawn.velocities, Swatch::Arrow, colours.velocity, "velocity");
   add(drawn.velocityChange, Swatch::Arrow, colours.highlight, "point velocity before → after");
-  add(drawn.highlight, Swatch::Ring, colours.highlight, "contact resolved, its impulse");
+  add(drawn.highlight, Swatch::Ring, colours.highlight, "contact resolved, its impulse λ/Δt");
   if (drawn.loads || drawn.weights || drawn.normalForces || drawn.staticFriction ||
       drawn.dynamicFriction) {
     entries.push_back(scaleEntry(forces, camera, settings));

@@ -89,6 +89,7 @@ TraceRecorder::TraceRecorder(const Simulation& simulation, const FrameRenderer& 
       renderer_(renderer.camera(), renderer.scene(), withVelocities(renderer.settings())),
       writer_(writer),
       before_(simulation.bodies()) {
+  renderer_.setLog(renderer.log());
   renderer_.fitForces(simulation);
 }
 
@@ -124,7 +125,11 @@ void TraceRecorder::drawHighlight(Drawing& drawing, DrawnKinds& drawn, const Sol
                settings.highlightWidth);
   const Vec2 impulse =
       event.normalImpulse * manifold.normal + event.tangentImpulse * manifold.tangent();
-  drawWorldArrow(drawing, camera, point, settings.traceImpulseScale * impulse, highlight, settings);
+  // At the run's force scale, as the force λ/Δt the event's impulse stands for over the step,
+  // so it compares with the contact forces and the legend's scale bar.
+  const ForceScale& forces = renderer_.forces();
+  drawWorldArrow(drawing, camera, point, forces.metresPerNewton / forces.dt * impulse, highlight,
+                 settings);
   drawn.highlight = true;
   if (event.phase != SolverEvent::Phase::Velocity || before_.size() != bodies.size()) return;
   drawing.setRole("velocity before");

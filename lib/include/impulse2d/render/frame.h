@@ -157,6 +157,7 @@ class FrameRenderer {
   int frameHeight() const;
   /// Every drawing call of the frames that follow goes to `log` too (for tests); null: none.
   void setLog(DrawingLog* log) { log_ = log; }
+  DrawingLog* log() const { return log_; }
 
  private:
   Camera camera_;

@@ -75,9 +75,6 @@ struct RenderSettings {
   /// Fraction of the scene's height the largest resting contact force is drawn when the force
   /// scale is fitted: 0.15 of a 500-pixel scene is 75 pixels.
   double restingForceLength = 0.15;
-  /// m per N s. Length of the impulse arrow of one solver event in a trace frame. One event
-  /// applies a fraction of a step's impulse (0.02 N s is typical for a 1 kg box): 0.4 m.
-  double traceImpulseScale = 20.0;
   /// m per m/s. Length of a velocity arrow: a body falling at 10 m/s gets a 1 m arrow.
   double velocityScale = 0.1;
   /// Arrows longer than this fraction of the scene's height are cut to it, so one large impulse
@@ -97,6 +94,9 @@ struct RenderSettings {
 
   double outlineWidth = 1.0;
   double rotationMarkWidth = 1.5;
+  /// The rotation mark runs from the centre towards the body's edge, at most this many text
+  /// sizes long.
+  double rotationMarkLength = 1.5;
   double contactPointRadius = 3.0;
   double contactNormalLength = 10.0;
   double contactNormalWidth = 1.0;
