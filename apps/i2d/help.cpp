@@ -16,7 +16,8 @@ usage:
   i2d --help                    this text
   i2d COMMAND --help            the options of one command
 
-SCENE is a TOML scene file (docs/scene-format.md); demos/scenes/ holds one per lecture concept.
+SCENE is a TOML scene file (docs/scene-format.md); demos/scenes/ holds one per lecture concept,
+and an installed i2d runs those by name: i2d run resting_box.
 The solvers are micro, sequential, soft_step, reference and box2d (Box2D 2.4, the behaviour
 reference).
 

@@ -11,6 +11,7 @@
 #include "failures.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/scene/setting_ranges.h"
+#include "scene_search.h"
 
 namespace i2d {
 namespace {
@@ -189,7 +190,7 @@ void parse(const std::vector<std::string>& arguments, const std::string& command
                          command + " --help)");
       }
     } else if (scenePath.empty()) {
-      scenePath = argument;
+      scenePath = findScene(argument);
     } else {
       throw UsageError("unexpected argument '" + argument + "': i2d " + command +
                        " takes one SCENE");

@@ -11,6 +11,7 @@
 
 namespace impulse2d {
 
+/// The settings of a world: gravity, the time step and what every step does besides solving.
 struct WorldSettings {
   /// m/s^2. Earth's gravity, downwards.
   Vec2 gravity = Vec2(0.0, -9.81);
@@ -590,10 +591,15 @@ struct SoftStepSettings {
 /// The settings of every solver; a scene picks one solver, and its [solver] table sets that
 /// solver's struct.
 struct SolverSettings {
+  /// "micro"
   MicroCollisionSettings micro;
+  /// "sequential"
   SequentialImpulseSettings sequential;
+  /// "reference"
   ReferenceSolverSettings reference;
+  /// "box2d"
   Box2dSettings box2d;
+  /// "soft_step"
   SoftStepSettings softStep;
 };
 
@@ -601,6 +607,7 @@ struct SolverSettings {
 /// line and for listing it in `i2d check`.
 struct SettingField {
   std::string name;  ///< snake_case, as in scene files
+  /// the field in the struct
   std::variant<double*, int*, bool*, Vec2*> value;
 };
 

@@ -12,6 +12,7 @@
 
 namespace impulse2d::render {
 
+/// A view of the world: image size, the world point at its centre and the scale.
 struct Camera {
   int width = 800;             ///< pixels, of the scene area
   int height = 600;            ///< pixels, of the scene area

@@ -9,20 +9,27 @@
 
 namespace impulse2d::render {
 
+/// Where a contact sheet puts its thumbnails: a grid of cells, each a thumbnail over its label.
 struct SheetLayout {
   /// Indices of the frames shown, in order.
   std::vector<int> frames;
+  /// thumbnails per row
   int columns = 0;
+  /// rows of thumbnails
   int rows = 0;
+  /// in pixels
   int thumbnailWidth = 0;
+  /// in pixels
   int thumbnailHeight = 0;
   int labelHeight = 0;  ///< the caption's bar, under each thumbnail
   int spacing = 0;      ///< between cells and around the sheet
   int width = 0;        ///< of the whole sheet
+  /// pixels, of the whole sheet
   int height = 0;
 
   /// Top left pixel of thumbnail k (its caption bar lies under it).
   int thumbnailX(int k) const { return spacing + (k % columns) * (thumbnailWidth + spacing); }
+  /// Top pixel row of thumbnail k.
   int thumbnailY(int k) const {
     return spacing + (k / columns) * (thumbnailHeight + labelHeight + spacing);
   }

@@ -27,14 +27,15 @@ class PngEncoder;
 /// One drawing call as a test reads it back: what was drawn, where (pixels), in which colour, and
 /// the role it was drawn for (Drawing::setRole: "body", "normal force", "load", ...).
 struct DrawnShape {
+  /// What kind of call it was.
   enum class Kind { Polygon, Circle, Line, Arrow, Text };
-  Kind kind = Kind::Polygon;
-  std::string role;
+  Kind kind = Kind::Polygon;  ///< the call
+  std::string role;           ///< what it was drawn for (Drawing::setRole)
   std::vector<Vec2>
       points;         ///< polygon corners; circle centre; line and arrow from, to; text corner
   Color colour;       ///< fill (shapes), stroke (lines, arrows), ink (text)
   double size = 0.0;  ///< circle radius, line width, text height
-  std::string text;
+  std::string text;   ///< a text call's words
 };
 using DrawingLog = std::vector<DrawnShape>;
 
@@ -42,10 +43,15 @@ using DrawingLog = std::vector<DrawnShape>;
 class Picture {
  public:
   Picture() = default;
+  /// An empty recording of width × height pixels.
   Picture(int width, int height);
+  /// pixels
   int width() const { return width_; }
+  /// pixels
   int height() const { return height_; }
+  /// The Cairo recording surface.
   cairo_surface_t* surface() const { return surface_.get(); }
+  /// Whether it holds a recording (a default-made Picture holds none).
   explicit operator bool() const { return bool(surface_); }
 
  private:
@@ -75,10 +81,13 @@ class Drawing {
 
   /// Filled polygon, outlined inside-and-out `outlineWidth` wide (0: none).
   void polygon(const std::vector<Vec2>& corners, Color fill, Color outline, double outlineWidth);
+  /// Filled circle, outlined `outlineWidth` wide (0: none).
   void circle(const Vec2& centre, double radius, Color fill, Color outline, double outlineWidth);
   /// A circle's outline only.
   void ring(const Vec2& centre, double radius, Color colour, double width);
+  /// Filled axis-aligned rectangle from its top left `corner`, no outline.
   void rectangle(const Vec2& corner, const Vec2& size, Color colour);
+  /// Straight line `width` wide with square-cut ends.
   void line(const Vec2& from, const Vec2& to, double width, Color colour);
   /// A shaft from `from` to `to` and a filled head at `to`; a shaft shorter than the head shrinks
   /// the head with it. A `halo` of nonzero alpha is drawn under it, `width` wider on each side,
@@ -144,6 +153,7 @@ Image rasterise(const Picture& picture, double scale = 1.0);
 class PictureWriter {
  public:
   PictureWriter();
+  /// Writes `picture` to `path` in `format`.
   void write(const std::filesystem::path& path, const Picture& picture, ImageFormat format);
 
  private:

@@ -61,24 +61,24 @@ double frictionUse(const Manifold& manifold);
 
 /// What a frame showed, for its legend: which body states and which arrow kinds.
 struct DrawnKinds {
-  std::array<bool, kBodyStateCount> states{};
-  bool normalForces = false;
-  bool staticFriction = false;
-  bool dynamicFriction = false;
-  bool frictionLimits = false;
-  bool loads = false;
-  bool weights = false;
-  bool slidingVelocities = false;
-  bool velocities = false;
-  bool gauges = false;
-  bool highlight = false;       ///< a trace frame's resolved contact and its impulse
-  bool velocityChange = false;  ///< a trace frame's point velocity before and after
+  std::array<bool, kBodyStateCount> states{};  ///< by BodyState: a body drawn in it
+  bool normalForces = false;                   ///< a normal force arrow
+  bool staticFriction = false;                 ///< a friction arrow inside the cone
+  bool dynamicFriction = false;                ///< a friction arrow on the cone
+  bool frictionLimits = false;                 ///< a μN mark on a friction arrow
+  bool loads = false;                          ///< an applied load's arrow
+  bool weights = false;                        ///< a weight's arrow
+  bool slidingVelocities = false;              ///< a slip velocity's arrow
+  bool velocities = false;                     ///< a body velocity's arrow
+  bool gauges = false;                         ///< a friction gauge
+  bool highlight = false;                      ///< a trace frame's resolved contact and its impulse
+  bool velocityChange = false;                 ///< a trace frame's point velocity before and after
 };
 
 /// What the heads-up strip says.
 struct FrameInfo {
-  std::string scene;
-  std::string solver;
+  std::string scene;    ///< the scene's name
+  std::string solver;   ///< the solver's name
   long step = 0;        ///< steps taken
   double time = 0.0;    ///< s, simulated
   double energy = 0.0;  ///< J, kinetic plus potential
@@ -122,10 +122,10 @@ double drawWorldArrow(Drawing& drawing, const Camera& camera, const Vec2& at, co
 /// A frame: its picture, where the scene area lies in it (a thumbnail shows that part alone),
 /// and the caption a thumbnail carries.
 struct Frame {
-  Picture picture;
+  Picture picture;                  ///< the whole frame: heads-up strip, scene, legend strip
   Vec2 sceneCorner = Vec2::Zero();  ///< pixels: the scene area's top left corner
   Vec2 sceneSize = Vec2::Zero();    ///< pixels
-  std::string caption;
+  std::string caption;              ///< under its thumbnail on a sheet
 };
 
 /// Extra drawing over a frame's scene (a trace frame's highlight), in camera pixels; it marks
@@ -136,6 +136,7 @@ using SceneExtra = std::function<void(Drawing&, DrawnKinds&)>;
 /// the scene area (the camera's), the legend strip.
 class FrameRenderer {
  public:
+  /// Frames of `scene` through `camera`, drawn with `settings`.
   FrameRenderer(const Camera& camera, std::string scene, const RenderSettings& settings = {});
 
   /// The frame of a simulation as it stands. The first call fits the run's force scale to the
@@ -144,19 +145,26 @@ class FrameRenderer {
   /// Fits the force scale every later frame uses (fitForceScale), with the substep's length as
   /// the time an impulse acts (a world's manifolds hold its last substep's impulses).
   void fitForces(const Simulation& simulation);
+  /// The run's force scale (fitted by the first frame or fitForces).
   const ForceScale& forces() const { return forces_; }
   /// The frame of bodies and manifolds, with the heads-up lines and caption given.
   Frame draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
              const SceneState& state, const std::vector<std::string>& headsUp,
              const std::string& caption, const SceneExtra& extra = {});
 
+  /// The camera of every frame.
   const Camera& camera() const { return camera_; }
+  /// The scene's name, for the heads-up strip.
   const std::string& scene() const { return scene_; }
+  /// The settings frames are drawn with.
   const RenderSettings& settings() const { return settings_; }
+  /// pixels, of the whole frame
   int frameWidth() const { return camera_.width; }
+  /// pixels, of the whole frame: the strips and the scene area
   int frameHeight() const;
   /// Every drawing call of the frames that follow goes to `log` too (for tests); null: none.
   void setLog(DrawingLog* log) { log_ = log; }
+  /// The log drawing calls go to, or null.
   DrawingLog* log() const { return log_; }
 
  private:

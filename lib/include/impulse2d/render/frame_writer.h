@@ -23,6 +23,7 @@ std::string tracePrefix(const std::string& scene, long step);
 /// "SCENE_compare": the prefix of the side-by-side frames of `i2d compare`.
 std::string comparePrefix(const std::string& scene);
 
+/// Writes a run's numbered PNG frames and its contact sheet into one directory.
 class FrameWriter {
  public:
   /// Frames go to root/scene/. Creates root (whose parent must exist) and root/scene, removes
@@ -43,15 +44,21 @@ class FrameWriter {
 
   /// Path of frame number `index`: directory()/PREFIX_%05d.png (.svg, .pdf).
   std::filesystem::path framePath(int index) const;
+  /// Path of the contact sheet: directory()/PREFIX_sheet.png.
   std::filesystem::path sheetPath() const;
+  /// ROOT/SCENE
   const std::filesystem::path& directory() const { return directory_; }
+  /// the start of every file name
   const std::string& prefix() const { return prefix_; }
+  /// steps between frames
   int every() const { return every_; }
+  /// frames written so far
   int frameCount() const { return int(steps_.size()); }
   /// The step of each frame written, by frame number.
   const std::vector<long>& steps() const { return steps_; }
   /// The frames written, by frame number.
   const std::vector<Frame>& frames() const { return frames_; }
+  /// The frames' file format.
   ImageFormat format() const { return format_; }
 
  private:

@@ -10,9 +10,10 @@
 
 namespace impulse2d::render {
 
+/// One panel of a comparison: a frame and its label.
 struct Panel {
-  const Frame* frame = nullptr;
-  std::string label;  ///< drawn in a bar above the frame, e.g. the solver's name
+  const Frame* frame = nullptr;  ///< the frame shown, owned by the caller
+  std::string label;             ///< drawn in a bar above the frame, e.g. the solver's name
 };
 
 /// Height of the label bar above each panel whose frames use text of `textSize`.

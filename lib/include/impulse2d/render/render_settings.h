@@ -10,26 +10,26 @@ namespace impulse2d::render {
 /// arrows take the Okabe-Ito palette, whose eight colours stay distinguishable under the common
 /// colour blindnesses; each arrow kind has a colour no body state has.
 struct Palette {
-  Color background{250, 250, 247, 255};
-  Color staticBody{170, 170, 170, 255};    ///< grey: never moves
-  Color flyingBody{86, 180, 233, 255};     ///< sky blue: no contact points
-  Color restingBody{0, 158, 115, 255};     ///< bluish green: in contact and slow
-  Color touchingBody{204, 121, 167, 255};  ///< reddish purple: in contact, moving, not sliding
-  Color slidingBody{230, 159, 0, 255};     ///< orange: a contact point slides
-  Color sleepingBody{200, 205, 215, 255};  ///< pale grey-blue: asleep
-  Color outline{40, 40, 40, 255};
-  Color rotationMark{20, 20, 20, 255};
-  Color contactPoint{255, 255, 255, 255};  ///< a white dot ringed in the outline colour
-  Color contactNormal{60, 60, 60, 255};
-  Color normalForce{0, 114, 178, 255};      ///< Okabe-Ito blue
-  Color staticFriction{100, 40, 150, 255};  ///< dark violet: friction inside the cone (sticking)
-  Color dynamicFriction{213, 94, 0, 255};   ///< Okabe-Ito vermilion: friction on the cone
-  Color frictionLimit{20, 20, 20, 255};     ///< the μN mark across a friction arrow
-  Color load{0, 0, 0, 255};                 ///< applied loads (and weights), black
-  Color velocity{90, 90, 90, 255};          ///< body and sliding velocities, dark grey
-  Color arrowHalo{255, 255, 255, 200};      ///< under loads and velocities, to show over bodies
-  Color highlight{204, 0, 153, 255};        ///< the contact a trace frame is resolving
-  Color text{20, 20, 20, 255};
+  Color background{250, 250, 247, 255};       ///< the scene area
+  Color staticBody{170, 170, 170, 255};       ///< grey: never moves
+  Color flyingBody{86, 180, 233, 255};        ///< sky blue: no contact points
+  Color restingBody{0, 158, 115, 255};        ///< bluish green: in contact and slow
+  Color touchingBody{204, 121, 167, 255};     ///< reddish purple: in contact, moving, not sliding
+  Color slidingBody{230, 159, 0, 255};        ///< orange: a contact point slides
+  Color sleepingBody{200, 205, 215, 255};     ///< pale grey-blue: asleep
+  Color outline{40, 40, 40, 255};             ///< bodies' and swatches' outlines
+  Color rotationMark{20, 20, 20, 255};        ///< the line showing a body's turn
+  Color contactPoint{255, 255, 255, 255};     ///< a white dot ringed in the outline colour
+  Color contactNormal{60, 60, 60, 255};       ///< the line along a contact's normal
+  Color normalForce{0, 114, 178, 255};        ///< Okabe-Ito blue
+  Color staticFriction{100, 40, 150, 255};    ///< dark violet: friction inside the cone (sticking)
+  Color dynamicFriction{213, 94, 0, 255};     ///< Okabe-Ito vermilion: friction on the cone
+  Color frictionLimit{20, 20, 20, 255};       ///< the μN mark across a friction arrow
+  Color load{0, 0, 0, 255};                   ///< applied loads (and weights), black
+  Color velocity{90, 90, 90, 255};            ///< body and sliding velocities, dark grey
+  Color arrowHalo{255, 255, 255, 200};        ///< under loads and velocities, to show over bodies
+  Color highlight{204, 0, 153, 255};          ///< the contact a trace frame is resolving
+  Color text{20, 20, 20, 255};                ///< all text
   Color stripBackground{236, 236, 230, 255};  ///< the heads-up and legend strips
   Color sheetBackground{70, 70, 70, 255};     ///< between thumbnails and panels
   Color sheetLabel{240, 240, 236, 255};       ///< the captions of thumbnails and panels
@@ -55,9 +55,10 @@ struct Overlays {
   bool legend = true;  ///< a strip under the scene: the colours and arrows used, the force scale
 };
 
+/// How frames look: colours, overlays, thresholds and sizes.
 struct RenderSettings {
-  Palette colours;
-  Overlays overlays;
+  Palette colours;    ///< every colour
+  Overlays overlays;  ///< what is drawn besides the bodies
 
   /// m/s. A body in contact whose centre moves slower than this (and turns slower than
   /// restingAngularSpeed) counts as resting: about 1 mm per step at 60 Hz.
@@ -84,25 +85,25 @@ struct RenderSettings {
   double minArrowLength = 2.0;
   /// Arrow sizes per pixel of text size (textSize), so arrows thicken with the text.
   double arrowWidth = 0.16;
-  double arrowHeadLength = 0.6;
-  double arrowHeadWidth = 0.5;
+  double arrowHeadLength = 0.6;  ///< per text size
+  double arrowHeadWidth = 0.5;   ///< per text size
   /// Contact force arrows start this many text sizes to the outside of their contact's middle
   /// along its tangent, so on a stack a box's normal arrows stand beside its edges, not on them.
   double contactArrowOffset = 0.25;
   /// Length of the μN mark across a friction arrow, per text size.
   double limitMarkLength = 0.9;
 
-  double outlineWidth = 1.0;
-  double rotationMarkWidth = 1.5;
+  double outlineWidth = 1.0;       ///< pixels, of bodies
+  double rotationMarkWidth = 1.5;  ///< pixels
   /// The rotation mark runs from the centre towards the body's edge, at most this many text
   /// sizes long.
   double rotationMarkLength = 1.5;
-  double contactPointRadius = 3.0;
-  double contactNormalLength = 10.0;
-  double contactNormalWidth = 1.0;
+  double contactPointRadius = 3.0;    ///< pixels
+  double contactNormalLength = 10.0;  ///< pixels
+  double contactNormalWidth = 1.0;    ///< pixels
   /// Radius of the ring round the contact a trace frame is resolving.
   double highlightRadius = 9.0;
-  double highlightWidth = 2.5;
+  double highlightWidth = 2.5;  ///< pixels, of the ring
 
   /// Pixels. No text is drawn smaller than this font size (the em): DejaVu Sans at 12 px has
   /// 9-pixel capitals, readable on a projector and in print at 150 dpi.
@@ -113,7 +114,7 @@ struct RenderSettings {
   /// Friction gauge: a bar of this length (at most 0.8 of the contact's width) and thickness
   /// per text size, just under the middle of each contact, filled to |Σλt| / (μ Σλn).
   double gaugeLength = 2.0;
-  double gaugeThickness = 0.45;
+  double gaugeThickness = 0.45;  ///< per text size
   /// A gauge at or above 1 − this is on the limit (dynamic friction) and drawn in its colour.
   double gaugeLimitTolerance = 1e-3;
   /// Contacts with a normal force below this (N) have no gauge: the ratio means nothing there.
@@ -139,7 +140,7 @@ struct RenderSettings {
 
   /// Contact sheet: this many thumbnails, first and last included, 4 to a row.
   int sheetThumbnails = 12;
-  int sheetColumns = 4;
+  int sheetColumns = 4;  ///< thumbnails to a row
   /// Thumbnail width (pixels); its caption's text is minimumTextSize, sized for the thumbnail.
   int sheetThumbnailWidth = 320;
   /// Thumbnails are at least this fraction of the scene's width, so a comparison's grid of

@@ -26,6 +26,7 @@ EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
                      const std::vector<Body>& after, const std::vector<Manifold>& manifolds,
                      const std::string& solver, double dt);
 
+/// Watches one step of a simulation and writes a frame for every solver event in it.
 class TraceRecorder : public SolverObserver {
  public:
   /// Frames of the step `simulation` is taking go to `writer`, drawn with the camera, scene and

@@ -15,7 +15,9 @@ namespace impulse2d::render {
 
 /// Figures per frame: the column names (with units) and one row per frame written.
 struct FigureTable {
+  /// names, with units
   std::vector<std::string> columns;
+  /// one per frame, one value per column
   std::vector<std::vector<double>> rows;
 };
 
@@ -23,11 +25,11 @@ struct FigureTable {
 /// timeMin at `left` to timeMax at `right` (fractions of the image's width), so the page can put
 /// a cursor at a frame's time.
 struct ViewerPlot {
-  std::string file;
+  std::string file;      ///< the image's name, beside the page
   double timeMin = 0.0;  ///< s
   double timeMax = 1.0;  ///< s
-  double left = 0.0;
-  double right = 1.0;
+  double left = 0.0;     ///< where timeMin lies, as a fraction of the image's width
+  double right = 1.0;    ///< where timeMax lies, as a fraction of the image's width
 };
 
 /// "index.html" for a run's frames (prefix == scene), else "PREFIX.html".

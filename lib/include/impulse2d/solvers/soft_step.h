@@ -35,8 +35,10 @@ Softness rigidSoftness(double h);
 /// loaded spring sag, falls, so at rest the point sinks its load over loadRatio·m_eff·ω².
 Softness loadedSoftness(double hertz, double dampingRatio, double h, double loadRatio);
 
+/// Box2D v3's soft step: substeps of soft contacts, relax, restitution (docs/soft-step.md).
 class SoftStepSolver : public ContactSolver {
  public:
+  /// A solver with these settings.
   explicit SoftStepSolver(const SoftStepSettings& settings) : settings_(settings) {}
 
   std::string name() const override { return "soft_step"; }
@@ -51,6 +53,7 @@ class SoftStepSolver : public ContactSolver {
   bool wantsSpeculativeContacts() const override { return settings_.speculativeContacts; }
   ContactRecycling contactRecycling() const override;
 
+  /// its settings
   const SoftStepSettings& settings() const { return settings_; }
 
  private:
