@@ -8,11 +8,11 @@
 
 namespace impulse2d {
 
-/// The values a numeric setting may take: from `lowest` (included or not) to `highest` (included).
+/// The values a setting may take: from lowest to highest, each end included or not.
 struct SettingRange {
-  double lowest = 0.0;         ///< the least value, or the open end when !lowestIncluded
+  double lowest = 0.0;         ///< the lower end
   bool lowestIncluded = true;  ///< [lowest, ...] or (lowest, ...]
-  double highest = 0.0;        ///< the greatest value, always included
+  double highest = 0.0;        ///< the upper end
   /// Why the upper bound is there, for keys that would make a run unbounded; empty otherwise.
   std::string bound;
 };
