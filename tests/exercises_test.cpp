@@ -69,7 +69,7 @@ TEST_CASE("exercise 1: a resting box is held by its weight, m g, at half its hei
   CHECK(std::abs(world->bodies()[1].position.y() - 0.5) < 0.005);
 }
 
-TEST_CASE("exercise 2: micro-collisions turn the resting force into m g dt a update",
+TEST_CASE("exercise 2: micro-collisions turn the resting force into m g dt an update",
           "[exercises][micro]") {
   SceneFile scene = exerciseScene("resting.toml");
   scene.solver = "micro";
@@ -174,7 +174,7 @@ TEST_CASE("exercise 9: a 20-box tower stands with accumulated impulses, fails wi
   CHECK(travelAfter(scene, "box20", 600) > slopAllowance);
 }
 
-TEST_CASE("exercise 10: warm started, 10 sweeps a step hold a 10-box tower; from zero it sinks",
+TEST_CASE("exercise 10: warm started, 10 sweeps a step hold a 10-box tower, from zero it sinks",
           "[exercises][warm_starting]") {
   SceneFile scene = exerciseScene("tower.toml");
   scene.solverSettings.sequential.velocityIterations = 10;

@@ -88,7 +88,7 @@ TEST_CASE("a box placed on a ramp touches its top face, turned to its slope", "[
   CHECK(top.normal.dot(box.position - top.point) == Approx(0.25).margin(1e-9));
 }
 
-TEST_CASE("angle_deg turns a placed body from the face's slope; its corner then touches",
+TEST_CASE("angle_deg turns a placed body from the face's slope, and its corner then touches",
           "[scene-file][on]") {
   const SceneFile scene = parseScene(kBoxOnRamp + "angle_deg = 30.0\n", "on.toml");
   const BodyDef& box = bodyNamed(scene, "box");
@@ -96,7 +96,7 @@ TEST_CASE("angle_deg turns a placed body from the face's slope; its corner then 
   CHECK(std::abs(lowestAbove(worldVertices(box), rampTop(20.0, Vec2(1.0, -2.0), 1.0))) < 1e-9);
 }
 
-TEST_CASE("a circle rests on a face at its radius; a box on a placed box on the ramp",
+TEST_CASE("a circle rests on a face at its radius, and a box on a placed box on the ramp",
           "[scene-file][on]") {
   // The upper box names the lower one before the lower one is placed: placement is bottom up.
   const std::string text = kRamp + R"([[body]]
