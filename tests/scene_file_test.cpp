@@ -189,8 +189,26 @@ TEST_CASE("[solver] preset = \"lecture\" turns off every refinement of the micro
   CHECK(micro.removeAccelerationVelocity);  // the lecture's own fixes stay on
   CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\npreset = \"book\"\n" +
                 std::string(kOneBall)) ==
-        "bad.toml:4:10: unknown preset 'book' for solver 'micro' (known: 'lecture', for solver "
-        "'micro')");
+        "bad.toml:4:10: unknown preset 'book' for solver 'micro' (known: 'lecture'; i2d presets "
+        "lists all)");
+}
+
+TEST_CASE("[solver] preset = \"box2d_2_4\" sets Box2D 2.4.1's contact solver",
+          "[scene-file][solver][preset]") {
+  const SceneFile scene = parseScene(
+      std::string("[solver]\npreset = \"box2d_2_4\"\nvelocity_iterations = 10\n") + kOneBall,
+      "box2d.toml");
+  const SequentialImpulseSettings& sequential = scene.solverSettings.sequential;
+  CHECK(scene.preset == "box2d_2_4");
+  CHECK(sequential.velocityIterations == 10);  // a key after the preset still applies
+  CHECK(sequential.positionPass.iterations == 3);
+  CHECK(sequential.frictionFirst);
+  CHECK_FALSE(sequential.targets.penetrationBias);
+  CHECK_FALSE(sequential.blockPositionCorrection);
+  CHECK(errorOf("[world]\nsolver = \"reference\"\n[solver]\npreset = \"box2d_2_4\"\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:10: unknown preset 'box2d_2_4' for solver 'reference' (known: none; i2d "
+        "presets lists all)");
 }
 
 TEST_CASE("[[stack]] and [[pyramid]] expand to touching boxes", "[scene-file][generators]") {

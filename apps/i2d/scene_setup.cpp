@@ -2,12 +2,25 @@
 #include "scene_setup.h"
 
 #include "failures.h"
+#include "impulse2d/presets.h"
 #include "impulse2d/scene/scene_file.h"
 
 namespace i2d {
 
 void applyOverrides(const SceneOptions& options, impulse2d::SceneFile& scene) {
-  if (options.solver) scene.solver = *options.solver;
+  if (options.solver && *options.solver != scene.solver) {
+    scene.solver = *options.solver;
+    scene.preset.clear();  // the file's preset was the other solver's
+  }
+  if (options.preset) {
+    const impulse2d::Preset* preset = impulse2d::findPreset(scene.solver, *options.preset);
+    if (!preset) {
+      throw UsageError("unknown preset '" + *options.preset + "' for solver '" + scene.solver +
+                       "' (known: " + impulse2d::presetNames(scene.solver) + "; see i2d presets)");
+    }
+    preset->apply(scene.solverSettings);
+    scene.preset = preset->name;
+  }
   for (const std::string& assignment : options.settings) {
     try {
       impulse2d::applySetting(scene, assignment);

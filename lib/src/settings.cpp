@@ -1,6 +1,8 @@
 // The settings fields by their scene-file names.
 #include "impulse2d/settings.h"
 
+#include <limits>
+
 namespace impulse2d {
 
 std::vector<SettingField> describe(WorldSettings& s) {
@@ -77,6 +79,29 @@ void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
 
 }  // namespace
 
+SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
+  SequentialImpulseSettings settings;
+  settings.velocityIterations = 10;
+  settings.convergedImpulseChange = 0.0;
+  settings.targets.allowedPenetration = 0.01;
+  settings.targets.maxBiasVelocity = std::numeric_limits<double>::infinity();
+  settings.targets.restitutionVelocityThreshold = std::numeric_limits<double>::infinity();
+  settings.positionPass.iterations = 0;
+  settings.block.enabled = false;
+  settings.blockPositionCorrection = false;
+  return settings;
+}
+
+SequentialImpulseSettings SequentialImpulseSettings::box2d24() {
+  SequentialImpulseSettings settings;
+  settings.velocityIterations = 8;
+  settings.convergedImpulseChange = 0.0;
+  settings.frictionFirst = true;
+  settings.targets.penetrationBias = false;
+  settings.blockPositionCorrection = false;
+  return settings;
+}
+
 std::vector<SettingField> describe(SequentialImpulseSettings& s) {
   std::vector<SettingField> fields = {{"velocity_iterations", &s.velocityIterations},
                                       {"converged_impulse_change", &s.convergedImpulseChange},
@@ -85,7 +110,9 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);
   fields.insert(fields.end(), {{"block_solver", &s.block.enabled},
-                               {"block_condition_limit", &s.block.conditionLimit}});
+                               {"block_condition_limit", &s.block.conditionLimit},
+                               {"block_position_correction", &s.blockPositionCorrection},
+                               {"friction_first", &s.frictionFirst}});
   return fields;
 }
 
@@ -129,6 +156,20 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
 std::vector<SettingField> describe(Box2dSettings& s) {
   return {{"velocity_iterations", &s.velocityIterations},
           {"position_iterations", &s.positionIterations}};
+}
+
+SoftStepSettings SoftStepSettings::box2dV3() {
+  SoftStepSettings settings;
+  settings.loadScaledStiffness = false;
+  settings.roundSurfaces = false;
+  settings.recycleWithinFoundDistance = false;
+  settings.recycleInWorldFrame = false;
+  settings.recycleRoundNormals = true;
+  settings.pairRestitution.enabled = false;
+  settings.frictionInRestitution = false;
+  settings.restitutionOnStepTotals = false;
+  settings.blockNormals.enabled = false;
+  return settings;
 }
 
 std::vector<SettingField> describe(SoftStepSettings& s) {

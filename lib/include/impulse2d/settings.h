@@ -221,9 +221,24 @@ struct SequentialImpulseSettings {
   ContactTargetSettings targets;
   /// The position pass after integration.
   PositionPassSettings positionPass;
-  /// The block solve of two-point contacts, for velocities and the position pass (it needs
-  /// accumulated impulses).
+  /// The block solve of two-point contacts' velocities (it needs accumulated impulses).
   BlockSolveSettings block;
+  /// The position pass corrects a two-point contact's corners together (true), or one corner at
+  /// a time, as Box2D 2.4's position solver does (false).
+  bool blockPositionCorrection = true;
+  /// Friction before the normal impulses in each contact's solve, as Box2D 2.4 orders them ("non
+  /// -penetration is more important than friction", so the normal has the last word in a sweep).
+  /// False: the normal first, then friction against it, as Box2D-Lite and the text do. Needs
+  /// accumulated impulses (without them friction is capped by this sweep's normal impulse).
+  bool frictionFirst = false;
+
+  /// Catto's Box2D-Lite: 10 sweeps to the end, normal then friction, Baumgarte bias 0.2 beyond a
+  /// slop of 0.01 m with no cap, no bounce, no block solve, no position pass.
+  static SequentialImpulseSettings box2dLite();
+  /// Box2D 2.4.1's b2ContactSolver: 8 sweeps to the end, friction first, the block solver, bounce
+  /// above 1 m/s and no penetration bias in the velocities; then 3 sweeps of its position solver
+  /// one point at a time (0.2 of the penetration beyond 0.005 m, at most 0.2 m).
+  static SequentialImpulseSettings box2d24();
 };
 
 /// Lemke's complementary pivoting (lcp.h): how it may pivot.
@@ -521,6 +536,9 @@ struct SoftStepSettings {
   /// pyramid20's settled drift 0.9 → 2.4 mm, energy gained at rest 0.03 → 0.6 J
   /// (docs/soft-step.md).
   BlockSolveSettings blockNormals{false};
+
+  /// Box2D v3's soft step as published: every refinement marked "ours beyond Box2D v3" off.
+  static SoftStepSettings box2dV3();
 };
 
 /// The settings of every solver; a scene picks one solver, and its [solver] table sets that

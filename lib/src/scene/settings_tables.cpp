@@ -1,6 +1,7 @@
 // The [world], [solver] and [render] tables of a scene file.
 #include <algorithm>
 
+#include "impulse2d/presets.h"
 #include "impulse2d/scene/scene_file.h"
 #include "scene_tables.h"
 #include "toml_reading.h"
@@ -24,17 +25,19 @@ void readSolverName(const toml::table& world, Scene& scene) {
   scene.solver = name;
 }
 
-/// `[solver] preset = "lecture"`: the micro-collision resolver as the lecture states it, every
-/// refinement of ours off (MicroCollisionSettings::lecture()); keys after it still apply.
+/// `[solver] preset = "box2d_2_4"`: the solver's settings become the published method's
+/// (presets.h); keys after it still apply.
 void readPreset(const toml::table& solver, Scene& scene) {
   const toml::node* node = solver.get("preset");
   if (!node) return;
   const std::string name = readString(*node, "preset");
-  if (scene.solver != "micro" || name != "lecture") {
+  const Preset* preset = findPreset(scene.solver, name);
+  if (!preset) {
     fail(node->source(), "unknown preset '" + name + "' for solver '" + scene.solver +
-                             "' (known: 'lecture', for solver 'micro')");
+                             "' (known: " + presetNames(scene.solver) + "; i2d presets lists all)");
   }
-  scene.solverSettings.micro = MicroCollisionSettings::lecture();
+  preset->apply(scene.solverSettings);
+  scene.preset = name;
 }
 
 }  // namespace

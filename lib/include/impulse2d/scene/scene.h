@@ -32,6 +32,8 @@ struct Scene {
   WorldSettings world;
   int steps = 600;
   std::string solver = "sequential";
+  /// The solver's preset (presets.h) its settings started from; empty: our defaults.
+  std::string preset;
   SolverSettings solverSettings;
   std::vector<BodyDef> bodies;
 };
