@@ -24,7 +24,7 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.speculativeGaps = false;
   settings.impulseTotals = false;
   settings.severityCountsPushedPoints = false;
-  settings.warmStart = false;
+  settings.warmStarting = false;
   settings.pairImpulses = false;
   settings.pairBounces = false;
   settings.pairMoves = false;
@@ -48,7 +48,7 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"speculative_gaps", &s.speculativeGaps},
           {"impulse_totals", &s.impulseTotals},
           {"severity_counts_pushed_points", &s.severityCountsPushedPoints},
-          {"warm_start", &s.warmStart},
+          {"warm_starting", &s.warmStarting},
           {"pair_impulses", &s.pairImpulses},
           {"pair_bounces", &s.pairBounces},
           {"pair_moves", &s.pairMoves},
@@ -160,15 +160,13 @@ std::vector<SettingField> describe(Box2dSettings& s) {
 
 SoftStepSettings SoftStepSettings::box2dV3() {
   SoftStepSettings settings;
-  settings.loadScaledStiffness = false;
   settings.roundSurfaces = false;
   settings.recycleWithinFoundDistance = false;
   settings.recycleInWorldFrame = false;
-  settings.recycleRoundNormals = true;
+  settings.renewRoundNormals = false;
   settings.pairRestitution.enabled = false;
   settings.frictionInRestitution = false;
   settings.restitutionOnStepTotals = false;
-  settings.blockNormals.enabled = false;
   return settings;
 }
 
@@ -179,8 +177,6 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"damping_ratio", &s.dampingRatio},
           {"static_hertz_factor", &s.staticHertzFactor},
           {"max_push_velocity", &s.maxPushVelocity},
-          {"load_scaled_stiffness", &s.loadScaledStiffness},
-          {"load_acceleration", &s.loadAcceleration},
           {"soft_contacts", &s.softContacts},
           {"relax", &s.relax},
           {"friction_in_relax", &s.frictionInRelax},
@@ -194,13 +190,11 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"recycle_in_world_frame", &s.recycleInWorldFrame},
           {"friction_in_restitution", &s.frictionInRestitution},
           {"restitution_on_step_totals", &s.restitutionOnStepTotals},
-          {"recycle_round_normals", &s.recycleRoundNormals},
+          {"renew_round_normals", &s.renewRoundNormals},
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
           {"pair_restitution", &s.pairRestitution.enabled},
-          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit},
-          {"block_normals", &s.blockNormals.enabled},
-          {"block_normals_condition_limit", &s.blockNormals.conditionLimit}};
+          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit}};
 }
 
 }  // namespace impulse2d

@@ -111,7 +111,7 @@ struct MicroCollisionSettings {
   /// Warm starting: each point starts the step from the totals it ended the last step with,
   /// matched by feature id, so resting weight does not have to pass down a stack one impulse at
   /// a time every step (667 M → 4.5 M instructions per step on pyramid20). Off: zero totals.
-  bool warmStart = true;
+  bool warmStarting = true;
   /// Pair impulses: the worst point of a two-point manifold, when both its points touch and need
   /// resolving and the impulse that stops both (both normals and the shared slip, through the
   /// pair's 3×3 contact matrix; frictionless, its two normal rows alone) pushes at both points,
@@ -413,18 +413,6 @@ struct SoftStepSettings {
   /// m/s. Largest speed at which the bias pushes overlapping bodies apart (Box2D v3's
   /// contactPushMaxVelocity, 3).
   double maxPushVelocity = 3.0;
-  /// A contact point is a spring per unit of its effective mass, so at rest it sinks its load
-  /// over m_eff·ω²: deep under a heavy body or a tall column. On, a point whose last load F
-  /// exceeds m_eff·loadAcceleration gets the spring of the mass it carries, F/loadAcceleration,
-  /// at the same hertz and damping (stiffness and damping both times the load ratio), so at rest
-  /// it sinks only loadAcceleration/ω². Off by default: the impulse scale it shrinks is also what
-  /// keeps one sweep per substep steady under a mass ratio, and with 4 substeps a heavy box on
-  /// a light one rocks (docs/soft-step.md). Off: Box2D v3's spring.
-  bool loadScaledStiffness = false;
-  /// m/s². The acceleration that turns a point's load into the mass it carries (10: under a
-  /// gravity of about 10 a point sinks g/ω², as a body resting alone does). Not the world's
-  /// gravity, so a contact pressed by a force in zero gravity stiffens the same way.
-  double loadAcceleration = 10.0;
   /// Soft constraints: bias rate, mass scale and impulse scale from hertz and damping ratio. Off:
   /// the rigid limit (infinite hertz): bias rate 1/h, mass scale 1, impulse scale 0, so each
   /// substep tries to remove the whole overlap.
@@ -487,17 +475,15 @@ struct SoftStepSettings {
   /// (v3): such a pair never moves, its unturned arms read a slip that is not there, and friction
   /// holding that slip drags the top body outward by about d θ² / 2: a box 1.5 m out on a seesaw
   /// turning 0.18 rad crept 2.5 cm along it and the plank turned 18 % too slowly (5 mm and 8 %
-  /// with it on). Its cost: pairs that lean together in a swaying pile are found anew with turned
-  /// arms, so soft step with loadScaledStiffness squeezes heavy_on_light's light boxes out from a
-  /// mass ratio of 22.9 instead of 31.6 (docs/soft-step.md).
+  /// with it on; docs/soft-step.md).
   bool recycleInWorldFrame = true;
-  /// Recycle round normals, as Box2D v3 does. Off (ours beyond v3): a manifold whose normal runs
-  /// to a circle's centre from a polygon's vertex or another circle's centre is found anew every
-  /// step, since that normal turns as the bodies move past each other (by the distance moved over
-  /// the radius), where a face's turns only with its body. On, a disc rolling over a table's edge
-  /// pivots on a normal up to the recycle distance old and leaves with its speed 1.8 % off
-  /// however small the step (0.03 % at 3,840 Hz with it off; docs/soft-step.md).
-  bool recycleRoundNormals = false;
+  /// Renew round normals, ours beyond Box2D v3: a manifold whose normal runs to a circle's centre
+  /// from a polygon's vertex or another circle's centre is found anew every step, since that
+  /// normal turns as the bodies move past each other (by the distance moved over the radius),
+  /// where a face's turns only with its body. Off (v3 recycles them): a disc rolling over a
+  /// table's edge pivots on a normal up to the recycle distance old and leaves with its speed
+  /// 1.8 % off however small the step (0.03 % at 3,840 Hz with it on; docs/soft-step.md).
+  bool renewRoundNormals = true;
   /// After the substeps, one pass that makes a closing contact separate at −e times its closing
   /// speed before the step (Box2D v3's b2ApplyRestitution). Off: soft contacts do not bounce.
   bool restitution = true;
@@ -526,16 +512,6 @@ struct SoftStepSettings {
   /// of two polygons gained up to 25 % of its energy (35 of 2,000 random impacts above 1 % at
   /// 60 Hz; with it on, 4, up to 3.2 %, as the reference's 3.3 %; docs/soft-step.md).
   bool restitutionOnStepTotals = true;
-  /// Block normals, ours beyond Box2D v3: the two normal impulses of a two-point manifold solved
-  /// together in every sweep, each point with its own softness (two_point_block.h), as Box2D
-  /// 2.4's block solver does for rigid contacts. Off (the default, v3's point by point), the
-  /// corner solved first takes a landing's impulse alone and turns the body, and friction then
-  /// turns that spin into a slide: a unit box dropped flat 2 m onto μ 0.5 at 60 Hz (e 0.9) leaves
-  /// its first bounce sideways at 0.24 m/s; on, 0, and a 40-box stack stands without contact
-  /// recycling. Off by default because one sweep per substep of stiffer pairs unsettles a pile:
-  /// pyramid20's settled drift 0.9 → 2.4 mm, energy gained at rest 0.03 → 0.6 J
-  /// (docs/soft-step.md).
-  BlockSolveSettings blockNormals{false};
 
   /// Box2D v3's soft step as published: every refinement marked "ours beyond Box2D v3" off.
   static SoftStepSettings box2dV3();

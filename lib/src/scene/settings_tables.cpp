@@ -40,6 +40,38 @@ void readPreset(const toml::table& solver, Scene& scene) {
   scene.preset = name;
 }
 
+/// A key a scene file may no longer use, and what to write instead.
+struct RetiredKey {
+  const char* solver;
+  const char* key;
+  const char* hint;
+};
+
+constexpr RetiredKey kRetiredKeys[] = {
+    {"micro", "warm_start", "is now 'warm_starting', its name in every method"},
+    {"soft_step", "recycle_round_normals",
+     "is now 'renew_round_normals', with its meaning turned so that true turns the idea on: "
+     "recycle_round_normals = X is renew_round_normals = not X"},
+    {"soft_step", "load_scaled_stiffness",
+     "was removed: it made results worse (docs/soft-step.md, \"Removed switches\")"},
+    {"soft_step", "load_acceleration",
+     "was removed with load_scaled_stiffness (docs/soft-step.md, \"Removed switches\")"},
+    {"soft_step", "block_normals",
+     "was removed: it made results worse (docs/soft-step.md, \"Removed switches\")"},
+    {"soft_step", "block_normals_condition_limit",
+     "was removed with block_normals (docs/soft-step.md, \"Removed switches\")"},
+};
+
+/// A renamed or removed key is one located error naming what to write instead.
+void rejectRetiredKeys(const toml::table& solver, const std::string& solverName) {
+  for (const RetiredKey& retired : kRetiredKeys) {
+    if (solverName != retired.solver) continue;
+    if (const toml::node* node = solver.get(retired.key)) {
+      fail(node->source(), "'" + std::string(retired.key) + "' " + retired.hint);
+    }
+  }
+}
+
 }  // namespace
 
 void readWorld(const toml::table& root, Scene& scene) {
@@ -53,6 +85,7 @@ void readWorld(const toml::table& root, Scene& scene) {
 void readSolver(const toml::table& root, Scene& scene) {
   const toml::table* solver = findTable(root, "solver");
   if (!solver) return;
+  rejectRetiredKeys(*solver, scene.solver);
   readPreset(*solver, scene);
   readSettingsTable(*solver, solverSettingFields(scene.solverSettings, scene.solver), {"preset"},
                     "[solver] for solver '" + scene.solver + "'");
