@@ -99,16 +99,6 @@ Scene sceneFor(const StressScene& stress, const Method& method, double knob) {
 
 namespace {
 
-/// The first body whose state is not finite, or null.
-const Body* firstNonFinite(const Simulation& simulation) {
-  for (const Body& body : simulation.bodies()) {
-    const bool finite = body.position.allFinite() && std::isfinite(body.angle) &&
-                        body.velocity.allFinite() && std::isfinite(body.angularVelocity);
-    if (!finite) return &body;
-  }
-  return nullptr;
-}
-
 void intervene(const StressScene& stress, Simulation& simulation) {
   for (const Intervention& intervention : stress.interventions) {
     if (intervention.step != simulation.stepCount()) continue;
@@ -133,12 +123,10 @@ Outcome runStress(const StressScene& stress, const Method& method, double knob,
     intervene(stress, *simulation);
     try {
       simulation->step();
+    } catch (const NonFiniteState& error) {
+      return stoppedAt(error.what());  // names the body and the step
     } catch (const std::exception& error) {
       return stoppedAt(std::string(error.what()) + " at step " + std::to_string(step + 1));
-    }
-    if (const Body* body = firstNonFinite(*simulation)) {
-      return stoppedAt("body " + body->name + " became non-finite at step " +
-                       std::to_string(simulation->stepCount()));
     }
     probe->observe(*simulation);
     if (watch) watch(*simulation);

@@ -34,7 +34,8 @@ bool canRun(const StressScene& stress, const Method& method);
 struct Outcome {
   double measure = 0.0;  ///< the criterion's figure; +inf when the run stopped early
   bool failed = false;   ///< measure above the criterion's limit, or stopped early
-  /// Empty, or why the run stopped: "body NAME became non-finite at step N", a solver's error.
+  /// Empty, or why the run stopped: "body NAME became non-finite at step N (solver S)", a
+  /// solver's error.
   std::string stopped;
 };
 

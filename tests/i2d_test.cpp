@@ -212,7 +212,8 @@ TEST_CASE("a bad command line is one error line and exit code 2", "[i2d][errors]
       {"run " + scene + " --every 0", "error: option --every needs an integer >= 1, not '0'\n"},
       {"run " + scene + " --solver fast",
        "error: unknown solver 'fast' (known: micro, sequential, reference, soft_step, box2d)\n"},
-      {"run " + scene + " --set world.dt=-1", "error: --set:1:10: 'dt' must be > 0, not -1\n"},
+      {"run " + scene + " --set world.dt=-1",
+       "error: --set:1:10: dt = -1: must be in [1e-06, 1]\n"},
       {"check " + scene + " " + scene,
        "error: unexpected argument '" + scene + "': i2d check takes one SCENE\n"},
   };
@@ -245,34 +246,38 @@ TEST_CASE("an invalid scene is one located error, exit code 3, and no CSV", "[i2
 TEST_CASE("a CSV that cannot be written fails with exit code 1 and leaves nothing", "[i2d][csv]") {
   const TemporaryDirectory directory;
   const std::string scene = kScenes + "bouncing_ball.toml --steps 5 --csv ";
-  const Outcome noDirectory = i2d("run " + scene + (directory / "missing/out.csv"));
+  std::ofstream(directory / "file") << "in the way\n";
+  const Outcome noDirectory = i2d("run " + scene + (directory / "file/out.csv"));
   CHECK(noDirectory.exitCode == 1);
-  CHECK(noDirectory.err == "error: cannot write " + (directory / "missing/out.csv.tmp") +
-                               ": No such file or directory\n");
+  CHECK(noDirectory.err == "error: cannot create directory '" + (directory / "file") +
+                               "' for --csv: Not a directory\n");
 
   fs::create_directory(directory / "taken");
   const Outcome isDirectory = i2d("run " + scene + (directory / "taken"));
   CHECK(isDirectory.exitCode == 1);
   CHECK(isDirectory.err == "error: cannot write " + (directory / "taken") + ": Is a directory\n");
-  CHECK(directory.files() == std::vector<std::string>{"taken"});
+  std::vector<std::string> files = directory.files();
+  std::sort(files.begin(), files.end());
+  CHECK(files == std::vector<std::string>{"file", "taken"});
 }
 
 TEST_CASE("a state that becomes non-finite stops the run, keeping the rows so far",
           "[i2d][errors][csv]") {
-  // Gravity of -1e308 m/s² over 1 s steps: step 1 reaches v = -1e308, step 2 overflows to -inf.
+  // Gravity of -1e154 m/s² over 1 s steps on a disc of 0.5 m (0.785 kg): step 1 reaches
+  // v = -1e154, y = -1e154 and energies near 1e308 J; step 2 overflows them to infinity.
   const TemporaryDirectory directory;
   const std::string scene = directory / "overflow.toml";
   writeFile(scene,
-            "[world]\ngravity = [0, -1e308]\ndt = 1\nsteps = 10\nsolver = \"micro\"\n"
-            "[[body]]\nname = \"rocket\"\nshape = \"circle\"\nradius = 1\n");
+            "[world]\ngravity = [0, -1e154]\ndt = 1\nsteps = 10\nsolver = \"micro\"\n"
+            "[[body]]\nname = \"rocket\"\nshape = \"circle\"\nradius = 0.5\n");
   const std::string csv = directory / "overflow.csv";
   const Outcome outcome = i2d("run " + scene + " --csv " + csv);
   CHECK(outcome.exitCode == 1);
-  CHECK(outcome.err == "error: body rocket became non-finite at step 2\n");
+  CHECK(outcome.err == "error: body rocket became non-finite at step 2 (solver micro)\n");
   const std::vector<std::string> lines = readLines(csv);
   REQUIRE(lines.size() == 3);
   CHECK(lines[0] == kHeader);
-  CHECK(lines[2] == "1,1,rocket,0,-1e+308,0,0,-1e+308,0");
+  CHECK(lines[2] == "1,1,rocket,0,-1e+154,0,0,-1e+154,0");
 }
 
 TEST_CASE("i2d check prints the solver, settings and bodies", "[i2d][check]") {
@@ -341,15 +346,16 @@ TEST_CASE("run --frames writes a frame every K-th step, the last, and a sheet", 
 TEST_CASE("a frame directory that cannot be made is one error line and exit code 1",
           "[i2d][frames][errors]") {
   const TemporaryDirectory directory;
-  const std::string missing = directory / "missing/frames";
+  std::ofstream(directory / "file") << "in the way\n";
+  const std::string blocked = directory / "file/frames";
   const Outcome outcome =
-      i2d("run " + kScenes + "bouncing_ball.toml --steps 2 --frames " + missing);
+      i2d("run " + kScenes + "bouncing_ball.toml --steps 2 --frames " + blocked);
   CHECK(outcome.exitCode == 1);
   CHECK(outcome.out.empty());
   CHECK(outcome.err.rfind("error: ", 0) == 0);
-  CHECK(outcome.err.find(missing) != std::string::npos);
+  CHECK(outcome.err.find(blocked) != std::string::npos);
   CHECK(std::count(outcome.err.begin(), outcome.err.end(), '\n') == 1);
-  CHECK(directory.files().empty());
+  CHECK(directory.files() == std::vector<std::string>{"file"});
 }
 
 TEST_CASE("run --video without ffmpeg on PATH is one error line and exit code 1", "[i2d][frames]") {

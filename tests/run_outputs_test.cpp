@@ -127,11 +127,13 @@ TEST_CASE("run --plots writes the five figures as PNGs, and a traced step its ve
 TEST_CASE("an unwritable plot directory and an unknown animation are one error line each",
           "[outputs][errors]") {
   const Scratch scratch;
+  std::ofstream(scratch.path / "file") << "in the way\n";
+  const std::string blocked = (scratch.path / "file/plots").string();
   const Outcome noParent =
-      i2d("run " + kScenes + "resting_box.toml --steps 5 --plots /nonexistent/dir/plots", scratch);
+      i2d("run " + kScenes + "resting_box.toml --steps 5 --plots " + blocked, scratch);
   CHECK(noParent.exitCode == 1);
   CHECK(lineCount(noParent.err) == 1);
-  CHECK(noParent.err.find("/nonexistent/dir") != std::string::npos);
+  CHECK(noParent.err.find(blocked) != std::string::npos);
 
   const Outcome unknown =
       i2d("run " + kScenes + "resting_box.toml --animation avi --frames " + scratch.path.string(),

@@ -268,7 +268,7 @@ TEST_CASE("a bad --set is one located error", "[scene-file][set][errors]") {
         "--set:1:1: expected section.key=value, such as solver.velocity_iterations=12, not 'dt=1'");
   CHECK(errorOfSetting("foo.bar=1") ==
         "--set:1:1: unknown key 'foo' in --set (known: world, solver)");
-  CHECK(errorOfSetting("world.dt=-1") == "--set:1:10: 'dt' must be > 0, not -1");
+  CHECK(errorOfSetting("world.dt=-1") == "--set:1:10: dt = -1: must be in [1e-06, 1]");
   CHECK(errorOfSetting("world.steps=many") ==
         "--set:1:13: 'steps' must be an integer, not a string");
   CHECK(
@@ -329,8 +329,9 @@ TEST_CASE("each kind of bad input is one error at its place", "[scene-file][erro
           "bad.toml:4:12: 'friction' must be >= 0, not -0.1");
     CHECK(errorOf(ball + "restitution = 1.5\n") ==
           "bad.toml:4:15: 'restitution' must be in [0, 1], not 1.5");
-    CHECK(errorOf("[world]\ndt = 0\n" + ball) == "bad.toml:2:6: 'dt' must be > 0, not 0");
-    CHECK(errorOf("[world]\nsteps = -1\n" + ball) == "bad.toml:2:9: 'steps' must be >= 0, not -1");
+    CHECK(errorOf("[world]\ndt = 0\n" + ball) == "bad.toml:2:6: dt = 0: must be in [1e-06, 1]");
+    CHECK(errorOf("[world]\nsteps = -1\n" + ball) ==
+          "bad.toml:2:9: steps = -1: must be an integer in [0, 10000000]");
   }
   SECTION("degenerate or non-convex polygon") {
     CHECK(errorOf("[[body]]\nshape = \"polygon\"\nvertices = [[0, 0], [1, 0], [2, 0]]\n") ==

@@ -131,6 +131,7 @@ int checkCommand(const CheckOptions& options) {
   printSolverSettings(scene);
   printBodyCounts(scene.bodies);
   for (const BodyDef& body : scene.bodies) printBody(body);
+  warnAboutStartingOverlaps(scene, std::cerr);
   return kSuccess;
 }
 

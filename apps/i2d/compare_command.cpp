@@ -10,7 +10,9 @@
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/panels.h"
 #include "impulse2d/scene/scene_file.h"
+#include "impulse2d/scene/setting_ranges.h"
 #include "impulse2d/solvers/reference_solver.h"
+#include "output_directories.h"
 #include "plots.h"
 #include "scene_setup.h"
 
@@ -41,11 +43,20 @@ SceneFile panelScene(const SceneFile& file, const SceneOptions& common, const Pa
   options.settings.insert(options.settings.end(), panel.settings.begin(), panel.settings.end());
   SceneFile scene = file;
   applyOverrides(options, scene);
+  impulse2d::checkSceneSize(scene, common.scenePath);
   return scene;
+}
+
+/// The panels side by side make one image: its pixels are refused before anything is drawn.
+void checkPanelPixels(const SceneFile& file, const CompareOptions& options) {
+  const std::string refused =
+      impulse2d::checkFramePixels(file.view.width, file.view.height, int(options.panels.size()));
+  if (!refused.empty()) throw impulse2d::SceneError(options.scene.scenePath, refused);
 }
 
 std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
   const SceneFile file = impulse2d::loadSceneFile(options.scene.scenePath);
+  checkPanelPixels(file, options);
   const Camera camera = sceneCamera(file, settings);  // --set changes no body: one view for all
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {
@@ -57,25 +68,16 @@ std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSet
   return runs;
 }
 
-bool isFinite(const Simulation& simulation) {
-  for (const impulse2d::Body& body : simulation.bodies()) {
-    if (!body.position.allFinite() || !std::isfinite(body.angle)) return false;
-  }
-  return true;
-}
-
 void stepPanels(std::vector<PanelRun>& runs) {
   for (PanelRun& run : runs) {
     try {
       run.simulation->step();
+    } catch (const impulse2d::NonFiniteState& failure) {
+      throw RunFailure("panel '" + run.label + "': " + failure.what());
     } catch (const impulse2d::ReferenceSolveFailure& failure) {
       throw RunFailure("panel '" + run.label + "' at " +
                        stepAndTime(run.simulation->stepCount() + 1, run.simulation->settings().dt) +
                        ": " + failure.what());
-    }
-    if (!isFinite(*run.simulation)) {
-      throw RunFailure("panel '" + run.label + "' became non-finite at step " +
-                       std::to_string(run.simulation->stepCount()));
     }
   }
 }
@@ -135,9 +137,11 @@ void printPanelSummary(const std::vector<PanelRun>& runs) {
 
 int compareCommand(const CompareOptions& options) {
   checkVideoPossible(options.frames);
-  if (options.plots) preparePlotDirectory(*options.plots);
   const RenderSettings settings = renderSettings(options.frames);
   std::vector<PanelRun> runs = startPanels(options, settings);
+  createOutputDirectory(options.frames.directory, "--frames");
+  createOutputDirectory(options.plots, "--plots");
+  if (options.plots) preparePlotDirectory(*options.plots);
   const SceneFile& first = runs.front().scene;
   FrameWriter writer(*options.frames.directory, first.name, options.every,
                      comparePrefix(first.name), settings);

@@ -16,6 +16,7 @@
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/solvers/error_vs_reference.h"
 #include "impulse2d/world.h"
+#include "output_directories.h"
 #include "scene_setup.h"
 
 namespace i2d {
@@ -23,27 +24,30 @@ namespace {
 
 using impulse2d::ReferenceError;
 
-/// Writes FILE.tmp, then renames it: FILE appears only when complete.
-/// One row per velocity solve (substeps solve several times a step), at the solve's time;
-/// exact_answer says whether the reference found one (without it the row has no errors).
+/// Writes FILE.tmp, then renames it: FILE appears only when complete, and on any failure the
+/// temporary file is removed. One row per velocity solve (substeps solve several times a step),
+/// at the solve's time; exact_answer says whether the reference found one (without it the row
+/// has no errors).
 void writeErrors(const std::string& path, const std::vector<ReferenceError>& errors,
                  double solveDt) {
   const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << "solve,t,points,impulse_error,velocity_error,violation,exact_answer\n";
-    for (const ReferenceError& error : errors) {
-      out << error.step + 1 << ',' << double(error.step + 1) * solveDt << ',' << error.points << ','
-          << error.impulseError << ',' << error.velocityError << ',' << error.violation << ','
-          << (error.noExactAnswer.empty() ? "found" : "none") << '\n';
-    }
-    if (!out.flush()) {
-      std::remove(temporary.c_str());
-      throw RunFailure("cannot write " + temporary + ": " + std::strerror(errno));
-    }
+  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  out << "solve,t,points,impulse_error,velocity_error,violation,exact_answer\n";
+  for (const ReferenceError& error : errors) {
+    out << error.step + 1 << ',' << double(error.step + 1) * solveDt << ',' << error.points << ','
+        << error.impulseError << ',' << error.velocityError << ',' << error.violation << ','
+        << (error.noExactAnswer.empty() ? "found" : "none") << '\n';
+  }
+  out.close();
+  if (!out) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw RunFailure("cannot write " + temporary + ": " + reason);
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    throw RunFailure("cannot write " + path + ": " + std::strerror(errno));
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw RunFailure("cannot write " + path + ": " + reason);
   }
 }
 
@@ -91,6 +95,18 @@ void printErrorSummary(const std::vector<ReferenceError>& errors) {
   printUnanswered(errors);
 }
 
+/// The rows of the steps the world finished: a step that overflowed may have measured its
+/// solves on overflowing velocities, so none of its rows is kept.
+std::vector<ReferenceError> solvesBefore(const impulse2d::World& world,
+                                         const std::vector<ReferenceError>& errors) {
+  const long kept = world.stepCount() * world.settings().substeps;
+  std::vector<ReferenceError> finished;
+  for (const ReferenceError& error : errors) {
+    if (error.step < kept) finished.push_back(error);
+  }
+  return finished;
+}
+
 }  // namespace
 
 int errorVsReferenceRun(const RunOptions& options) {
@@ -102,9 +118,17 @@ int errorVsReferenceRun(const RunOptions& options) {
   const impulse2d::ErrorVsReference& watched = *solver;  // the world will own it
   impulse2d::World world(scene.world, std::move(solver));
   for (const impulse2d::Body& body : impulse2d::buildBodies(scene)) world.addBody(body);
-  for (int step = 0; step < scene.steps; ++step) world.step();
-  writeErrors(*options.errorVsReferencePath, watched.errors(),
-              world.settings().dt / world.settings().substeps);
+  createOutputDirectory(directoryOf(options.errorVsReferencePath), "--error-vs-reference");
+  const double solveDt = world.settings().dt / world.settings().substeps;
+  for (int step = 0; step < scene.steps; ++step) {
+    try {
+      world.step();
+    } catch (const impulse2d::NonFiniteState& failure) {
+      writeErrors(*options.errorVsReferencePath, solvesBefore(world, watched.errors()), solveDt);
+      throw RunFailure(failure.what());
+    }
+  }
+  writeErrors(*options.errorVsReferencePath, watched.errors(), solveDt);
   std::cout << "scene        " << scene.name << " (solver " << scene.solver
             << ", watched by the reference)\nsteps        " << scene.steps << "\n";
   printErrorSummary(watched.errors());

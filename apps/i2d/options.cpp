@@ -11,6 +11,7 @@
 #include "failures.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/presets.h"
+#include "impulse2d/scene/setting_ranges.h"
 
 namespace i2d {
 namespace {
@@ -73,6 +74,18 @@ double parsePositive(const std::string& text, const std::string& option) {
     throw UsageError("option " + option + " needs a finite number > 0, not '" + text + "'");
   }
   return value;
+}
+
+/// An option that stands for a [world] setting (--steps, --dt, --trace-step's steps) takes
+/// the setting's range from the same table as the scene file.
+void checkWorldRange(double value, const std::string& option, const std::string& key,
+                     const std::string& text) {
+  const std::optional<impulse2d::SettingRange> range = impulse2d::findSettingRange("world", key);
+  if (range && !impulse2d::inSettingRange(value, *range)) {
+    throw UsageError("option " + option + " " +
+                     impulse2d::describeSettingRange(*range, key == "steps", value) + ", not '" +
+                     text + "'");
+  }
 }
 
 std::string trim(const std::string& text) {
@@ -201,9 +214,11 @@ void addSceneHandlers(Handlers& handlers, SceneOptions& options, bool withSolver
   }
   handlers.options["--steps"] = [&](const std::string& value) {
     options.steps = parseInteger(value, "--steps", 0);
+    checkWorldRange(*options.steps, "--steps", "steps", value);
   };
   handlers.options["--dt"] = [&](const std::string& value) {
     options.dt = parsePositive(value, "--dt");
+    checkWorldRange(*options.dt, "--dt", "dt", value);
   };
   handlers.options["--set"] = [&](const std::string& value) { options.settings.push_back(value); };
 }
@@ -267,8 +282,20 @@ PanelOption parsePanel(const std::string& text) {
   if (panel.label.empty()) {
     throw UsageError("option --panel needs 'LABEL: section.key=value; ...', not '" + text + "'");
   }
+  if (colon == std::string::npos && text.find('=') != std::string::npos) {
+    throw UsageError(
+        "option --panel needs a colon after its label, 'LABEL: section.key=value; "
+        "...', not '" +
+        text + "'");
+  }
   const std::string assignments = colon == std::string::npos ? "" : trim(text.substr(colon + 1));
   if (!assignments.empty()) panel.settings = splitList(assignments, ';', "--panel");
+  for (const std::string& assignment : panel.settings) {
+    if (assignment.find('=') == std::string::npos) {
+      throw UsageError("option --panel needs section.key=value assignments after its label, not '" +
+                       assignment + "'");
+    }
+  }
   return panel;
 }
 
@@ -280,6 +307,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
   handlers.options["--csv"] = [&](const std::string& value) { options.csvPath = value; };
   handlers.options["--trace-step"] = [&](const std::string& value) {
     options.traceStep = parseInteger(value, "--trace-step", 1);
+    checkWorldRange(*options.traceStep, "--trace-step", "steps", value);
   };
   handlers.options["--error-vs-reference"] = [&](const std::string& value) {
     options.errorVsReferencePath = value;

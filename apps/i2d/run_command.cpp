@@ -1,7 +1,6 @@
 // `i2d run`: load the scene, apply the command line's overrides, step, record, summarise; or,
 // with --trace-step, draw one frame per solver event of one step.
 #include <chrono>
-#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -12,6 +11,7 @@
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/render/trace.h"
 #include "impulse2d/solvers/reference_solver.h"
+#include "output_directories.h"
 #include "plots.h"
 #include "scene_setup.h"
 #include "summary.h"
@@ -57,26 +57,14 @@ struct Recorders {
   }
 };
 
-bool isFinite(const Body& body) {
-  return body.position.allFinite() && std::isfinite(body.angle) && body.velocity.allFinite() &&
-         std::isfinite(body.angularVelocity);
-}
-
-/// Stops the run at the first body whose state overflowed, keeping what was recorded so far.
-void stopIfNonFinite(const Simulation& simulation, Recorders& recorders) {
-  for (const Body& body : simulation.bodies()) {
-    if (body.isStatic() || isFinite(body)) continue;
-    recorders.finish(simulation.settings().dt);
-    throw RunFailure("body " + body.name + " became non-finite at step " +
-                     std::to_string(simulation.stepCount()));
-  }
-}
-
-/// One step; a reference solve without an exact answer stops the run there, naming the step and
-/// keeping what was recorded before it, as a body that overflows does.
+/// One step; a body that overflows (NonFiniteState) or a reference solve without an exact answer
+/// stops the run there, naming the step and keeping what was recorded before it.
 void stepOrStop(Simulation& simulation, Recorders& recorders) {
   try {
     simulation.step();
+  } catch (const impulse2d::NonFiniteState& failure) {
+    recorders.finish(simulation.settings().dt);
+    throw RunFailure(failure.what());
   } catch (const impulse2d::ReferenceSolveFailure& failure) {
     recorders.finish(simulation.settings().dt);
     throw RunFailure(stepAndTime(simulation.stepCount() + 1, simulation.settings().dt) + ": " +
@@ -92,7 +80,6 @@ double runSteps(Simulation& simulation, long steps, Recorders& recorders) {
     const auto begin = std::chrono::steady_clock::now();
     stepOrStop(simulation, recorders);
     stepping += std::chrono::steady_clock::now() - begin;
-    stopIfNonFinite(simulation, recorders);
     recorders.record(simulation, steps);
   }
   return std::chrono::duration<double>(stepping).count();
@@ -100,6 +87,7 @@ double runSteps(Simulation& simulation, long steps, Recorders& recorders) {
 
 Recorders openRecorders(const RunOptions& options, const SceneFile& scene) {
   checkVideoPossible(options.frames);
+  createOutputDirectory(directoryOf(options.csvPath), "--csv");
   if (options.plots) preparePlotDirectory(*options.plots);
   Recorders recorders;
   recorders.every = options.every;
@@ -159,6 +147,9 @@ int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& 
 int runCommand(const RunOptions& options) {
   if (options.errorVsReferencePath) return errorVsReferenceRun(options);
   const SceneFile scene = loadScene(options.scene);
+  warnAboutStartingOverlaps(scene, std::cerr);
+  createOutputDirectory(options.frames.directory, "--frames");
+  createOutputDirectory(options.plots, "--plots");
   std::unique_ptr<Simulation> simulation = impulse2d::makeSimulation(scene);
   if (options.traceStep) return traceCommand(options, scene, *simulation);
   Recorders recorders = openRecorders(options, scene);

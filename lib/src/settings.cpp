@@ -1,7 +1,6 @@
 // The settings fields by their scene-file names.
 #include "impulse2d/settings.h"
 
-#include <limits>
 
 namespace impulse2d {
 
@@ -79,13 +78,21 @@ void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
 
 }  // namespace
 
+namespace {
+
+/// m/s. A speed no contact reaches, the top of the settings' range: a cap or threshold that never
+/// acts.
+constexpr double kNoLimit = 1000.0;
+
+}  // namespace
+
 SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
   SequentialImpulseSettings settings;
   settings.velocityIterations = 10;
   settings.convergedImpulseChange = 0.0;
   settings.targets.allowedPenetration = 0.01;
-  settings.targets.maxBiasVelocity = std::numeric_limits<double>::infinity();
-  settings.targets.restitutionVelocityThreshold = std::numeric_limits<double>::infinity();
+  settings.targets.maxBiasVelocity = kNoLimit;               // Box2D-Lite caps no bias
+  settings.targets.restitutionVelocityThreshold = kNoLimit;  // and has no bounce
   settings.positionPass.iterations = 0;
   settings.block.enabled = false;
   settings.blockPositionCorrection = false;

@@ -111,6 +111,7 @@ void World::substep(double h) {
   wakeTouchedIslands();
   const bool solverMovesBodies = solver_->integratesBodies();
   if (!solverMovesBodies) integrateVelocities(h);
+  stopAtNonFiniteBody();
   const StepContext context{bodies_, manifoldsToSolve(), h, observer_, settings_.gravity};
   solver_->solveVelocities(context);
   if (!solverMovesBodies) integratePositions(h);
@@ -121,7 +122,14 @@ void World::substep(double h) {
     refreshCaches();
   }
   storeSolvedManifolds();
+  stopAtNonFiniteBody();
   putRestingIslandsToSleep(h);
+}
+
+// Before the solver reads the velocities and after the substep: a load or mass beyond what a
+// double holds stops the run at the first overflowed body, before any solver pivots on it.
+void World::stopAtNonFiniteBody() const {
+  impulse2d::stopAtNonFiniteBody(bodies_, settings_.gravity, stepCount_ + 1, solver_->name());
 }
 
 void World::wakeDisturbedBodies() {

@@ -1,4 +1,5 @@
-// Every tunable number of the engine, with its documented default. One struct for the world and
+// Every tunable number of the engine, with its documented default and valid range (checked where
+// a scene or --set gives it: scene/setting_ranges.h). One struct for the world and
 // one per contact solver; a scene file's [world] and [solver] tables set their fields by name.
 #pragma once
 
@@ -14,13 +15,16 @@ struct WorldSettings {
   /// m/s^2. Earth's gravity, downwards.
   Vec2 gravity = Vec2(0.0, -9.81);
   /// s. The fixed time step: 60 updates a second, as most games run.
+  /// Range: [1e-06, 1].
   double dt = 1.0 / 60.0;
   /// m. Contact points are generated while the surfaces are closer than this, so a resting body
   /// whose correction left a hair's gap keeps its contact. Solvers treat a gap as speculative:
   /// they only act if the gap would close within the step.
+  /// Range: [0, 1].
   double contactMargin = 0.005;
   /// Each step runs the whole pipeline this many times with dt/substeps: a cure for a time step
   /// too large for the scene (deep overlaps, soft stacks) that keeps the step the caller sees.
+  /// Range: [1, 1000] (more would let one run take hours).
   int substeps = 1;
   /// Fast bodies find their contacts one step early: the broad phase fattens each body's bounds
   /// by |v|·dt and a pair keeps contact points while the gap is under contactMargin + |vB−vA|·dt,
@@ -31,11 +35,14 @@ struct WorldSettings {
   bool sleeping = false;
   /// m/s. A body slower than this (and sleepAngularSpeed) counts as resting. Box2D's 0.01: a
   /// hundredth of a body width of 1 m per second is invisible at 60 frames a second.
+  /// Range: [0, 100].
   double sleepLinearSpeed = 0.01;
   /// rad/s. The angular speed below which a body counts as resting: Box2D's 2 degrees a second.
+  /// Range: [0, 100].
   double sleepAngularSpeed = 2.0 * 3.14159265358979323846 / 180.0;
   /// s. An island sleeps once every body in it has rested this long (Box2D's half a second:
   /// long enough that a body at the top of a bounce or a swing is not frozen).
+  /// Range: [0, 1e+06].
   double timeToSleep = 0.5;
   /// Keep a body that is speeding up awake, ours beyond Box2D: a body counts as resting only while
   /// its speed and spin have grown by less than speedUpShare of the thresholds above since its
@@ -49,6 +56,7 @@ struct WorldSettings {
   /// The share of sleepLinearSpeed (sleepAngularSpeed) by which a resting body's speed (spin) may
   /// grow before it counts as speeding up: 1 mm/s and 0.2°/s. A settled pile's bodies jitter up
   /// by at most half of that (4.7e-4 m/s measured on a 10-box stack under micro).
+  /// Range: [0, 1].
   double speedUpShare = 0.1;
 };
 
@@ -60,11 +68,13 @@ struct MicroCollisionSettings {
   /// Use zero restitution when the closing speed is under restitutionVelocityLimit.
   bool lowerRestitutionAtLowSpeed = true;
   /// m/s. Below this closing speed a contact does not bounce. Millington uses 0.25.
+  /// Range: [0, 1000].
   double restitutionVelocityLimit = 0.25;
   /// Friction as impulses through the 2×2 contact matrix. Off: frictionless normal impulses.
   bool friction = true;
   /// m/s. Velocity resolution stops when no contact needs a larger velocity change; a bounce
   /// smaller than this is none (the point is not marked as bounced).
+  /// Range: [0, 1].
   double velocityEpsilon = 1e-4;
   /// m. Penetration resolution stops when no contact penetrates deeper than this. Resting
   /// bodies settle at up to this overlap, and every step the points that sink past it are moved
@@ -74,18 +84,23 @@ struct MicroCollisionSettings {
   /// and tall pyramids. The lecture preset, which moves one corner at a time, keeps 1e-5: there
   /// a box settles tilted by up to the epsilon over its width, and a 10-box stack leans 5.5 mm
   /// at 1e-4 (docs/micro-collisions.md). Millington's engine uses 0.01.
+  /// Range: [0, 1].
   double positionEpsilon = 1e-4;
   /// Velocity resolution may apply at most this many impulses per contact point in a step. A
   /// stack passes weight down one contact at a time: a 10-box stack needs about 200 to hold
   /// still (50 lets it sink and slide 8 cm in 10 s). With passCapWhileProgressing a step still
   /// converging at the cap goes on.
+  /// Range: [0, 10000] (more would let one run take hours).
   int velocityIterationsPerContact = 200;
   /// Penetration resolution may resolve at most this many times per contact point in a step.
+  /// Range: [0, 1000] (more would let one run take hours).
   int positionIterationsPerContact = 8;
   /// The rotation a penetration move may use, as a fraction of the contact arm: a move of d at
   /// arm r turns the body by at most angularMoveLimit·|r| of distance (Millington's 0.2).
+  /// Range: [0, 10].
   double angularMoveLimit = 0.2;
   /// Below this |determinant| the contact matrix counts as singular (frictionless fallback).
+  /// Range: [0, 1].
   double singularMatrixTolerance = 1e-12;
   /// m. A point apart by no more than this counts as touching. The penetration phase moves a
   /// resolved point to zero overlap, which the next step's contact reads give or take round-off
@@ -93,6 +108,7 @@ struct MicroCollisionSettings {
   /// lecture preset's collision there, and the ball behind pushes its neighbour by moves alone.
   /// A speculative gap closing within the step is judged to the same tolerance, so the two
   /// corners of a face landing flat engage together.
+  /// Range: [0, 0.1].
   double touchingTolerance = 1e-9;
 
   // Refinements of ours, beyond the lecture; each is off in lecture() (docs/micro-collisions.md).
@@ -141,14 +157,18 @@ struct MicroCollisionSettings {
   bool passCapWhileProgressing = true;
   /// Rounds of one impulse per point over which progress is measured (at least 1; fewer never
   /// pass the cap).
+  /// Range: [1, 10000].
   int progressRounds = 20;
   /// The least fraction by which the waiting total must fall over progressRounds rounds.
+  /// Range: [0, 1].
   double minimumProgress = 0.2;
   /// Most impulses per contact point in a step when passing the cap.
+  /// Range: [0, 10000] (more would let one run take hours).
   int velocityIterationsPerContactLimit = 1000;
   /// A pair is resolved together only when its matrix is this well conditioned: for a move,
   /// k₀₀² < limit · det K (Box2D 2.4's test); for an impulse, det K > (product of K's diagonal) /
   /// limit. A narrower pair (two points almost at one place) is resolved one point at a time.
+  /// Range: [1, 1e+12].
   double pairConditionLimit = 1000.0;
 
   /// The plain method of the lecture: every refinement above off, and positionEpsilon 1e-5
@@ -163,13 +183,17 @@ struct ContactTargetSettings {
   /// Target a small separating velocity that grows with penetration (Baumgarte bias).
   bool penetrationBias = true;
   /// Fraction of the penetration beyond the slop removed per step by the bias velocity.
+  /// Range: [0, 1].
   double biasFactor = 0.2;
   /// m. The slop: penetration the bias and the position pass leave alone, so resting contacts
   /// stay touching. Its one home for each solver.
+  /// Range: [0, 1].
   double allowedPenetration = 0.005;
   /// m/s. Cap on the bias velocity, so deep overlaps separate without an explosion.
+  /// Range: [0, 1000].
   double maxBiasVelocity = 4.0;
   /// m/s. Below this closing speed a contact does not bounce (Box2D 2.4: 1 m/s).
+  /// Range: [0, 1000].
   double restitutionVelocityThreshold = 1.0;
 };
 
@@ -184,10 +208,13 @@ inline ContactTargetSettings unbiasedTargets() {
 /// the slop of the solver's ContactTargetSettings alone.
 struct PositionPassSettings {
   /// Sweeps of the position pass; 0 turns it off.
+  /// Range: [0, 1000] (more would let one run take hours).
   int iterations = 3;
   /// Fraction of the remaining penetration beyond the slop removed per sweep.
+  /// Range: [0, 1].
   double correctionFactor = 0.2;
   /// m. Largest correction at one contact in one sweep.
+  /// Range: [0, 10].
   double maxCorrection = 0.2;
 };
 
@@ -197,6 +224,7 @@ struct BlockSolveSettings {
   /// does; the corner visited first then always gets more, and a tall stack leans and sways.
   bool enabled = true;
   /// A two-point contact is solved as a block only while k₀₀² < this × det K (Box2D's 1000).
+  /// Range: [1, 1e+12].
   double conditionLimit = 1000.0;
 };
 
@@ -205,6 +233,7 @@ struct SequentialImpulseSettings {
   /// Most sweeps over all contacts per step. A stack of n boxes starting from rest needs about n
   /// sweeps before the weight reaches the bottom within one step, and a 40-row pyramid rests only
   /// with about 40; once a pile rests the sweeps stop after one (convergedImpulseChange).
+  /// Range: [0, 10000] (more would let one run take hours).
   int velocityIterations = 40;
   /// The sweeps stop early once a whole sweep changed no impulse (normal or friction) by more
   /// than this fraction of the largest normal total: the answer has converged, and the sweeps
@@ -212,6 +241,7 @@ struct SequentialImpulseSettings {
   /// starting from rest still needs all of them. At 1e-6 the settled drift, penetration and
   /// stack force error equal those of full sweeps to three digits (docs/sequential-impulses.md).
   /// 0 always makes velocityIterations sweeps, the text's method.
+  /// Range: [0, 1000].
   double convergedImpulseChange = 1e-6;
   /// Clamp each contact's running total of impulse rather than each impulse.
   bool accumulateImpulses = true;
@@ -245,17 +275,22 @@ struct SequentialImpulseSettings {
 struct LemkeSettings {
   /// The method gives up (and says so) after this many pivots, or after maxPivotsPerVariable
   /// per variable of the problem if that is fewer.
+  /// Range: [1, 1000000] (more would let one run take hours).
   int maxPivots = 100000;
   /// A path that reaches a solution takes a few pivots per variable (at most 4 seen, on a
   /// 10-row pyramid's landing); one that round-off sends in circles would run to maxPivots.
+  /// Range: [1, 100] (more would let one run take hours).
   int maxPivotsPerVariable = 20;
   /// A column entry must exceed this times the column's largest entry (or 1) to be a pivot:
   /// smaller entries are round-off of zeros, and pivoting on one wrecks the basis inverse.
+  /// Range: [0, 1].
   double pivotTolerance = 1e-9;
   /// Ratios closer than this (relative) count as a tie, broken lexicographically.
+  /// Range: [0, 1].
   double tieTolerance = 1e-12;
   /// Harris's ratio test (RatioTest::Harris) may overshoot a basic variable by this much,
   /// relative to the largest basic value, to take a larger pivot.
+  /// Range: [0, 1].
   double harrisTolerance = 1e-11;
 };
 
@@ -263,10 +298,12 @@ struct LemkeSettings {
 struct ActiveSetSettings {
   /// Projected Gauss–Seidel sweeps from last step's impulses that guess each point's state
   /// (separated, sticking, sliding) before the first factorization.
+  /// Range: [0, 10000] (more would let one run take hours).
   int guessSweeps = 20;
   /// After guessSweeps, the sweeps go on while one still changes a point's state, up to this
   /// many: a pile's first step starts from zero impulses, and its states settle only once the
   /// weight has reached the bottom, about one row a sweep.
+  /// Range: [0, 10000] (more would let one run take hours).
   int maxGuessSweeps = 400;
   /// A point solved last step (its impulses and state carried over by feature id) starts in the
   /// state it was solved in; only new points take the state the sweeps guess, and a pile
@@ -275,9 +312,11 @@ struct ActiveSetSettings {
   /// 45–95 such points a step. Off: every point's state comes from the sweeps.
   bool warmStates = true;
   /// The method gives up (and says so) after this many factorizations.
+  /// Range: [0, 10000] (more would let one run take hours).
   int maxFactorizations = 200;
   /// Block flips in a row that do not lower the number of violated points before the method
   /// flips one point at a time (Júdice–Pires' safeguard against cycling).
+  /// Range: [0, 10000].
   int blockFailures = 3;
   /// A flip that does not lower the number of violated points below the best seen goes back to
   /// the best states and flips half as many of their violators, the worst first, then a
@@ -296,6 +335,7 @@ struct ActiveSetSettings {
   /// of redundant contacts (a box face's two points, a pyramid) regular. The shift of the
   /// velocities it causes is taken out again by corrections centred on the last answer
   /// (`refinements`).
+  /// Range: [0, 1].
   double regularization = 1e-8;
   /// The regularization is centred on the guess (last step's impulses at a point carried over,
   /// the sweeps' at a new one) instead of on zero: a resting pile's answer then needs no
@@ -305,12 +345,15 @@ struct ActiveSetSettings {
   /// Most corrections on fresh factors that take the regularization's shift out (proximal point
   /// steps; each removes all but about `regularization` of what is left, so one usually does).
   /// On kept factors the corrections may go on for up to keptRounds.
+  /// Range: [0, 100] (more would let one run take hours).
   int refinements = 3;
   /// The corrections stop once the residual of the unregularized system is below this fraction
   /// of |b| + |A||x|: a thousandth of residualTolerance, and above the floor that a pile's
   /// redundant rows leave (about 1e-14, rising slowly as a resting pyramid settles).
+  /// Range: [0, 1].
   double refinementTolerance = 1e-12;
   /// A condition counts as violated beyond this fraction of the island's impulse scale.
+  /// Range: [0, 1].
   double flipTolerance = 1e-12;
   /// The factors of each island's last factorized system are kept, and a step's first system of
   /// the same size is first solved by GMRES preconditioned by them (KeptFactorization): a
@@ -319,6 +362,7 @@ struct ActiveSetSettings {
   /// GMRES rounds on kept factors before the system is factorized after all, and then at most as
   /// many corrections that take the regularization out: each costs one solve with the factors,
   /// about 1/30 of a factorization of a 20-row pyramid's system.
+  /// Range: [0, 10000] (more would let one run take hours).
   int keptRounds = 8;
   /// Solves with kept factors beyond a system's first solve and first correction (GMRES
   /// rounds, further corrections), summed since the factors were made, after which the next
@@ -326,14 +370,17 @@ struct ActiveSetSettings {
   /// solves (35 ms against 0.79 ms), so a pile whose kept factors have drifted from it pays at
   /// most about twice what a factorization at the right moment would cost, and one that rests
   /// on them pays nothing more.
+  /// Range: [0, 100000].
   int refactorAfterSolves = 40;
   /// A solve on kept factors is done once the residual of A x = b is below this fraction of
   /// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.
+  /// Range: [0, 1].
   double keptTolerance = 1e-14;
   /// The factorization takes a row's own diagonal entry as its pivot when that entry is at
   /// least this fraction of the largest in its column, so the symmetric fill-reducing order
   /// holds; below, it pivots on the largest. The regularized pivots of a redundant pile are about
   /// `regularization` of their column and must pass; 1 is partial pivoting.
+  /// Range: [0, 1].
   double diagonalPivotThreshold = 1e-12;
 };
 
@@ -341,6 +388,7 @@ struct ActiveSetSettings {
 struct ReferenceSolverSettings {
   /// Required residual of the physical conditions (N s), relative to the step's impulse scale:
   /// the largest of the impulses, each point's cancelling impulses and the contact bodies' momenta.
+  /// Range: (0, 1].
   double residualTolerance = 1e-9;
   /// Lemke's pivot limit and tolerances; reaching the limit is reported, never silently accepted.
   LemkeSettings lemke;
@@ -348,18 +396,22 @@ struct ReferenceSolverSettings {
   /// lexicographic rule can then still end on a ray. Lemke is retried once with q moved by
   /// this much (relative to its largest entry, growing along the rows), the textbook remedy;
   /// the answer is checked against the unperturbed problem, so it cannot pass unnoticed.
+  /// Range: [0, 0.001].
   double degeneracyPerturbation = 1e-10;
   /// Then Lemke is tried with Harris's ratio test, and then along up to this many other covering
   /// vectors (entries drawn in [0.5, 2) from a fixed seed), each with both ratio tests: every
   /// path ends at a solution in exact arithmetic, but on a landing pile round-off and tiny pivots
   /// end some of them on a ray or an answer the residual check rejects. 0: no such retries.
+  /// Range: [0, 100] (more would let one run take hours).
   int coveringRetries = 3;
   /// Islands of up to this many contact points are solved by Lemke; larger ones by the active
   /// set, whose cost grows with the sparse factorization instead of Lemke's points³ (a stack of
   /// 10 boxes has 20 points, a 10-row pyramid 280).
+  /// Range: [0, 500] (a larger island would take Lemke minutes each step).
   int lemkeIslandPoints = 40;
   /// A large island on which the active set fails is given to Lemke if it has at most this many
   /// points; larger ones fail with the active set's reason.
+  /// Range: [0, 500] (a larger island would take Lemke minutes each step).
   int lemkeFallbackPoints = 300;
   /// The active set of large islands.
   ActiveSetSettings activeSet;
@@ -386,8 +438,10 @@ struct ReferenceSolverSettings {
 /// Box2D 2.4 running the same scene (the behaviour reference): its iteration counts.
 struct Box2dSettings {
   /// Box2D's velocity iterations per step (its testbed default).
+  /// Range: [0, 1000] (more would let one run take hours).
   int velocityIterations = 8;
   /// Box2D's position iterations per step (its testbed default).
+  /// Range: [0, 1000] (more would let one run take hours).
   int positionIterations = 3;
 };
 
@@ -397,21 +451,27 @@ struct Box2dSettings {
 struct SoftStepSettings {
   /// Substeps per world step: velocities, warm start, a solve with bias, positions, a relax
   /// solve. Box2D v3's default: 4.
+  /// Range: [1, 1000] (more would let one run take hours).
   int substeps = 4;
   /// Hz. Stiffness of a contact as the frequency it would oscillate at on its own mass
   /// (Box2D v3's contactHertz, 30).
+  /// Range: (0, 10000].
   double contactHertz = 30.0;
   /// The stiffness never exceeds this fraction of the substep rate: a spring must be resolved by
   /// several substeps per period (Box2D v3: a quarter).
+  /// Range: (0, 1].
   double maxHertzPerSubstepRate = 0.25;
   /// Damping ratio of the contact spring; above 1 it is overdamped and creeps back without
   /// overshoot (Box2D v3's contactDampingRatio, 10).
+  /// Range: [0, 10000].
   double dampingRatio = 10.0;
   /// A contact with a static body is this many times stiffer in hertz, so the ground holds the
   /// weight of a pile (Box2D v3: 2).
+  /// Range: (0, 100].
   double staticHertzFactor = 2.0;
   /// m/s. Largest speed at which the bias pushes overlapping bodies apart (Box2D v3's
   /// contactPushMaxVelocity, 3).
+  /// Range: [0, 1000].
   double maxPushVelocity = 3.0;
   /// Soft constraints: bias rate, mass scale and impulse scale from hertz and damping ratio. Off:
   /// the rigid limit (infinite hertz): bias rate 1/h, mass scale 1, impulse scale 0, so each
@@ -456,9 +516,11 @@ struct SoftStepSettings {
   /// m. A manifold is found anew once B has moved this far relative to A since it was found,
   /// counting the turn of the farther-reaching body at its largest extent (Box2D v3: 10 × its
   /// linear slop of 0.005 m).
+  /// Range: [0, 1].
   double recycleDistance = 0.05;
   /// rad. A manifold is also found anew once either body has turned this far since it was found
   /// (Box2D v3: cosine above 0.98, about 11.5°).
+  /// Range: [0, 3.14159].
   double recycleLargestTurn = 0.2;
   /// Recycle within the found distance, ours beyond Box2D v3: a one-point manifold (a vertex or
   /// a circle on a face) is also found anew once the bodies have moved, as recycleDistance counts
@@ -488,6 +550,7 @@ struct SoftStepSettings {
   /// speed before the step (Box2D v3's b2ApplyRestitution). Off: soft contacts do not bounce.
   bool restitution = true;
   /// m/s. Below this closing speed a contact does not bounce (Box2D v3: 1 m/s).
+  /// Range: [0, 1000].
   double restitutionVelocityThreshold = 1.0;
   /// Pair restitution, ours beyond Box2D v3: a two-point manifold whose points both bounce gets
   /// their restitution impulses together, its 2×2 block of normals solved exactly on the

@@ -2,6 +2,7 @@
 // with any of its solvers, or Box2D running the same scene.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,24 @@
 #include "impulse2d/solver.h"
 
 namespace impulse2d {
+
+/// A step left a dynamic body's state non-finite (a load, mass or speed beyond what a double
+/// holds). The step throws it at once, naming the first such body, so no solver and no figure
+/// ever reads the overflowed state; the bodies keep the state the step left.
+/// what(): "body NAME became non-finite at step N (solver S)".
+class NonFiniteState : public std::runtime_error {
+ public:
+  NonFiniteState(const std::string& body, long step, const std::string& solver);
+};
+
+/// A body's state is finite when its position, angle, velocity and angular velocity are, and so
+/// are the kinetic energy and the potential energy in `gravity` they give: every figure a run
+/// reports of the body is then finite too.
+bool hasFiniteState(const Body& body, const Vec2& gravity);
+
+/// Throws NonFiniteState for the first dynamic body of `bodies` whose state is not finite.
+void stopAtNonFiniteBody(const std::vector<Body>& bodies, const Vec2& gravity, long step,
+                         const std::string& solver);
 
 class Simulation {
  public:

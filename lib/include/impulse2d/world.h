@@ -15,6 +15,8 @@
 //                          none); an island with an awake body wakes whole.
 //   4. integrateVelocities awake bodies: v += (g + F/m)·h, ω += (τ/I)·h; the linear acceleration
 //                          is kept in Body::lastAcceleration; forces and torques are cleared.
+//                          A body whose state is then not finite stops the step (NonFiniteState),
+//                          as one left so after the substep does.
 //   5. solveVelocities     the solver's contact impulses act on the new velocities; it is given
 //                          only the manifolds with an awake body.
 //   6. integratePositions  awake bodies: x += v·h, θ += ω·h, with the velocities after impulses;
@@ -83,6 +85,8 @@ class World : public Simulation {
   /// Adds every body's applied load at simulated time `time` (s), before a substep.
   void applyLoads(double time);
   void substep(double h);
+  /// Throws NonFiniteState (simulation.h) naming the first dynamic body whose state overflowed.
+  void stopAtNonFiniteBody() const;
   void wakeDisturbedBodies();
   void findContacts(double h);
   void findCandidatePairs(double h);

@@ -112,11 +112,15 @@ void compare(Run& run, const Simulation& reference) {
   }
 }
 
-/// One step of the run; a method that throws stops, and the failure is kept in its figures.
+/// One step of the run; a method whose solve fails stops, and the failure is kept in its
+/// figures. A body that overflows (NonFiniteState) ends the whole measure: no figure of it would
+/// be finite.
 bool advance(Run& run) {
   if (!run.figures.failure.empty()) return false;
   try {
     run.simulation->step();
+  } catch (const NonFiniteState&) {
+    throw;
   } catch (const std::exception& error) {
     run.figures.failure = error.what();
     return false;

@@ -73,6 +73,15 @@ FrictionState frictionState(double normalImpulse, double tangentImpulse, double 
                                                                        : FrictionState::Static;
 }
 
+/// Box2D holds a body's state in floats, and asserts that each is finite: a state beyond a
+/// float's 3.4e38 (a speed of 1e100 m/s is a valid double) stops before step 1.
+void stopUnlessSinglePrecision(const b2BodyDef& body, const std::string& name) {
+  if (!body.position.IsValid() || !body.linearVelocity.IsValid() || !std::isfinite(body.angle) ||
+      !std::isfinite(body.angularVelocity)) {
+    throw NonFiniteState(name, 0, kBox2dName);
+  }
+}
+
 }  // namespace
 
 struct Box2dSimulation::Box2dWorld {
@@ -107,6 +116,7 @@ Box2dSimulation::Box2dSimulation(const Scene& scene, const Box2dOptions& options
     bodyDef.linearVelocity = toBox2d(bodies_[i].velocity);
     bodyDef.angularVelocity = float(bodies_[i].angularVelocity);
     bodyDef.userData.pointer = i;
+    stopUnlessSinglePrecision(bodyDef, bodies_[i].name);
     b2Body* body = world_->world.CreateBody(&bodyDef);
     addFixture(*body, def, restitutionThreshold);
     world_->bodies.push_back(body);
@@ -132,6 +142,7 @@ void Box2dSimulation::step() {
   world_->world.Step(float(settings_.dt), iterations_.velocityIterations,
                      iterations_.positionIterations);
   readBodies();
+  stopAtNonFiniteBody(bodies_, settings_.gravity, stepCount_ + 1, kBox2dName);
   readContacts();
   ++stepCount_;
 }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "impulse2d/scene/setting_ranges.h"
 #include "impulse2d/solver.h"
 #include "scene_tables.h"
 #include "toml_reading.h"
@@ -100,7 +101,19 @@ SceneFile parseScene(std::string_view text, const std::string& sourceName) {
     throw SceneError(sourceName, 1, 1,
                      "scene has no bodies (add [[body]], [[stack]] or [[pyramid]])");
   }
+  checkSceneSize(scene, sourceName);
   return scene;
+}
+
+void checkSceneSize(const Scene& scene, const std::string& sourceName) {
+  const auto dynamic =
+      std::count_if(scene.bodies.begin(), scene.bodies.end(),
+                    [](const BodyDef& body) { return body.type == BodyType::Dynamic; });
+  const int solverSubsteps =
+      scene.solver == "soft_step" ? scene.solverSettings.softStep.substeps : 1;
+  const std::string refused =
+      checkRunSize(scene.steps, long(dynamic), scene.world.substeps * solverSubsteps);
+  if (!refused.empty()) throw SceneError(sourceName, refused);
 }
 
 void applySetting(Scene& scene, const std::string& assignment) {

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "impulse2d/scene/scene_file.h"
+#include "impulse2d/scene/setting_ranges.h"
 
 namespace impulse2d::scene_file {
 namespace {
@@ -66,21 +67,33 @@ std::string describeRange(Range range) {
   }
 }
 
-Range settingRange(const std::string& name) {
-  if (name == "dt") return Range::Positive;
-  if (name == "gravity") return Range::Any;
-  return Range::NonNegative;
+[[noreturn]] void failRange(const toml::node& node, std::string_view key, const std::string& value,
+                            const SettingRange& range, bool integer, double number) {
+  fail(node.source(),
+       std::string(key) + " = " + value + ": " + describeSettingRange(range, integer, number));
 }
 
-void readSetting(const SettingField& field, const toml::node& node) {
-  const Range range = settingRange(field.name);
+double readSettingNumber(const toml::node& node, std::string_view key, const std::string& scope) {
+  const std::optional<SettingRange> range = findSettingRange(scope, std::string(key));
+  const double value = readNumber(node, key, range ? Range::Any : Range::NonNegative);
+  if (range && !inSettingRange(value, *range)) {
+    failRange(node, key, formatNumber(value), *range, false, value);
+  }
+  return value;
+}
+
+void readSetting(const SettingField& field, const toml::node& node, const std::string& scope) {
   std::visit(
       [&](auto* target) {
         using Target = std::remove_pointer_t<decltype(target)>;
-        if constexpr (std::is_same_v<Target, double>) *target = readNumber(node, field.name, range);
-        if constexpr (std::is_same_v<Target, int>) *target = readInteger(node, field.name, 0);
+        if constexpr (std::is_same_v<Target, double>) {
+          *target = readSettingNumber(node, field.name, scope);
+        }
+        if constexpr (std::is_same_v<Target, int>) {
+          *target = readSettingInteger(node, field.name, scope);
+        }
         if constexpr (std::is_same_v<Target, bool>) *target = readBoolean(node, field.name);
-        if constexpr (std::is_same_v<Target, Vec2>) *target = readVec2(node, field.name, range);
+        if constexpr (std::is_same_v<Target, Vec2>) *target = readVec2(node, field.name);
       },
       field.value);
 }
@@ -210,14 +223,26 @@ void readOptional(const toml::table& table, std::string_view key, std::string& t
   if (const toml::node* node = table.get(key)) target = readString(*node, key);
 }
 
+int readSettingInteger(const toml::node& node, std::string_view key, const std::string& scope) {
+  const std::optional<SettingRange> range = findSettingRange(scope, std::string(key));
+  if (!range) return readInteger(node, key, 0);
+  if (!node.is_integer()) failType(node, key, "an integer");
+  const int64_t value = *node.value<int64_t>();
+  if (!inSettingRange(double(value), *range)) {
+    failRange(node, key, std::to_string(value), *range, true, double(value));
+  }
+  return int(value);
+}
+
 void readSettingsTable(const toml::table& table, const std::vector<SettingField>& fields,
-                       const std::vector<std::string>& otherKeys, const std::string& tableName) {
+                       const std::vector<std::string>& otherKeys, const std::string& tableName,
+                       const std::string& scope) {
   std::vector<std::string> known;
   for (const SettingField& field : fields) known.push_back(field.name);
   known.insert(known.end(), otherKeys.begin(), otherKeys.end());
   rejectUnknownKeys(table, known, tableName);
   for (const SettingField& field : fields) {
-    if (const toml::node* node = table.get(field.name)) readSetting(field, *node);
+    if (const toml::node* node = table.get(field.name)) readSetting(field, *node, scope);
   }
 }
 

@@ -713,11 +713,15 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
                                KeptFactorization& kept) {
   const Eigen::VectorXd diagonal = delassusDiagonal(problem);
   const Eigen::VectorXd free = freeVelocity(problem);
+  ActiveSetAnswer answer;
+  if (!free.allFinite() || !diagonal.allFinite()) {
+    answer.failure = "active set: the problem is not finite (a velocity or mass overflowed)";
+    return answer;
+  }
   const Guess guess = firstGuess(problem, free, diagonal, settings);
   std::vector<ContactState> states = guess.states;
   std::optional<Neighbours> neighbours;  // W's pattern, built at the first factorization
   FlipRule flips(settings);
-  ActiveSetAnswer answer;
   const int factorizationsBefore = kept.factorizations();
   std::unordered_map<std::string, int> visits;  // how often each set of states was solved
   // Only the step's first system is solved on kept factors: after a flip, the flipped rows

@@ -50,6 +50,13 @@ void pivot(LemkeTableau& tableau, const Eigen::VectorXd& direction, int row, int
   tableau.basicVariable[static_cast<size_t>(row)] = entering;
 }
 
+/// A ratio test reads only finite numbers: an overflowed tableau (huge velocities against tiny
+/// masses) would make every ratio NaN and leave no candidate to pivot on.
+bool isFinite(const LemkeTableau& tableau, const Eigen::VectorXd& direction) {
+  return direction.allFinite() && tableau.basicValues.allFinite() &&
+         tableau.basisInverse.allFinite();
+}
+
 /// The candidates whose ratio is smallest, within the relative tie tolerance.
 template <class Ratio>
 std::vector<int> smallestRatios(const std::vector<int>& candidates, const Ratio& ratio,
@@ -129,6 +136,12 @@ int firstLeavingRow(const Eigen::VectorXd& q, const Eigen::VectorXd& covering) {
   return row;
 }
 
+LcpSolution failed(LcpSolution solution, const std::string& reason) {
+  solution.solved = false;
+  solution.failure = reason;
+  return solution;
+}
+
 /// z from the basic values of a finished path.
 Eigen::VectorXd impulsesOf(const LemkeTableau& tableau, const Eigen::VectorXd& values, int n) {
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
@@ -152,6 +165,9 @@ LcpSolution extractSolution(const LemkeTableau& tableau, const Eigen::MatrixXd& 
   const int n = static_cast<int>(q.size());
   solution.z = impulsesOf(tableau, tableau.basicValues, n);
   solution.w = m * solution.z + q;
+  if (!solution.z.allFinite() || !solution.w.allFinite()) {
+    return failed(solution, "Lemke: the answer is not finite");
+  }
   solution.solved = true;
   const double exact = kExactResidual * (1.0 + solution.z.cwiseAbs().maxCoeff());
   if (solution.z.cwiseMin(solution.w).cwiseAbs().maxCoeff() <= exact) return solution;
@@ -171,12 +187,6 @@ LcpSolution extractSolution(const LemkeTableau& tableau, const Eigen::MatrixXd& 
   return solution;
 }
 
-LcpSolution failed(LcpSolution solution, const std::string& reason) {
-  solution.solved = false;
-  solution.failure = reason;
-  return solution;
-}
-
 }  // namespace
 
 LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q,
@@ -189,6 +199,9 @@ LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const
                        const LemkeSettings& options) {
   const int n = static_cast<int>(q.size());
   LcpSolution solution;
+  if (!m.allFinite() || !q.allFinite()) {
+    return failed(solution, "Lemke: the problem is not finite (a velocity or mass overflowed)");
+  }
   if (n == 0 || q.minCoeff() >= 0.0) {
     solution.z = Eigen::VectorXd::Zero(n);
     solution.w = q;
@@ -216,6 +229,10 @@ LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const
     }
     entering = complement(leaving, n);
     direction.noalias() = tableau.basisInverse * constraintColumn(m, path.covering, entering);
+    if (!isFinite(tableau, direction)) {
+      return failed(solution, "Lemke: the tableau overflowed after " +
+                                  std::to_string(solution.pivots) + " pivots");
+    }
     row = path.ratioTest == RatioTest::Harris
               ? harrisLeavingRow(tableau, direction, options, artificial)
               : leavingRow(tableau, direction, options, artificial);

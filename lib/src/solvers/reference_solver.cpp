@@ -159,6 +159,7 @@ Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
   groupIslands(context);
   buildEffectiveMasses(context);
   buildFreeVelocity(context);
+  if (!freeVelocity_.allFinite()) fail("the velocities before the solve are not finite");
   Eigen::VectorXd impulses = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
   pushed_ = Eigen::VectorXd::Zero(impulses.size());
   int largeIslands = 0;

@@ -52,6 +52,11 @@ SceneFile parseScene(std::string_view text, const std::string& sourceName);
 /// Errors are SceneErrors located in the assignment, named "--set".
 void applySetting(Scene& scene, const std::string& assignment);
 
+/// Throws SceneError(sourceName, ...) when the run the scene asks for is too long to finish in
+/// reasonable time: steps × dynamic bodies × substeps above kMostBodySteps (setting_ranges.h).
+/// Checked when a file is parsed and again after the command line's overrides.
+void checkSceneSize(const Scene& scene, const std::string& sourceName);
+
 /// The solver names a scene may choose: the library's solverNames() and "box2d".
 std::vector<std::string> sceneSolverNames();
 
