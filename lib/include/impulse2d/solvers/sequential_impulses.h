@@ -16,6 +16,7 @@
 
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/sequential_impulse_settings.h"
 
 namespace impulse2d {
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "impulse2d/solver.h"
+#include "impulse2d/solvers/soft_step_settings.h"
 
 namespace impulse2d {
 
