@@ -25,13 +25,7 @@ void applyOverrides(const SceneOptions& options, impulse2d::SceneFile& scene) {
     preset->apply(scene.solverSettings);
     scene.preset = preset->name;
   }
-  for (const std::string& assignment : options.settings) {
-    try {
-      impulse2d::applySetting(scene, assignment);
-    } catch (const impulse2d::SceneError& error) {
-      throw UsageError(error.what());
-    }
-  }
+  for (const std::string& assignment : options.settings) impulse2d::applySetting(scene, assignment);
   if (options.steps) scene.steps = *options.steps;
   if (options.dt) scene.world.dt = *options.dt;
 }

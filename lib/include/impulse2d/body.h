@@ -20,6 +20,7 @@ struct AppliedLoad {
 
   /// The force at simulated time t (s): force + t · forceRate.
   Vec2 forceAt(double time) const { return force + time * forceRate; }
+  /// True when the load pushes with nothing: no force, no force rate, no torque.
   bool isZero() const {
     return force == Vec2::Zero() && forceRate == Vec2::Zero() && torque == 0.0;
   }
@@ -28,9 +29,13 @@ struct AppliedLoad {
 /// Static bodies never move and have zero inverse mass and inertia; dynamic bodies integrate.
 enum class BodyType { Static, Dynamic };
 
+/// A rigid body: its shape and material, mass properties, state, and what the world caches.
 struct Body {
+  /// as the scene names it
   std::string name;
+  /// static bodies never move
   BodyType type = BodyType::Dynamic;
+  /// centred on the centre of mass
   Shape shape;
 
   double friction = 0.5;     ///< coefficient of friction of the material (mixed per contact)
@@ -66,8 +71,10 @@ struct Body {
   double sleepTime = 0.0;
   /// m/s and rad/s. Its speed and spin when that rest began (WorldSettings::keepSpeedingUpAwake).
   double restSpeed = 0.0;
+  /// rad/s
   double restSpin = 0.0;
 
+  /// A static body: infinite mass, never moves.
   bool isStatic() const { return type == BodyType::Static; }
   /// Dynamic and not asleep: integrated and solved this step.
   bool isAwake() const { return !isStatic() && !asleep; }
@@ -127,6 +134,7 @@ struct Body {
     rotation << c * inverseLength, -s * inverseLength, s * inverseLength, c * inverseLength;
   }
 
+  /// Kinetic energy ½ m v² + ½ I ω² (J).
   double kineticEnergy() const;
   /// Potential energy in the gravity field g: −m g·x.
   double potentialEnergy(const Vec2& gravity) const;

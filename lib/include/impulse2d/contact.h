@@ -42,17 +42,21 @@ inline Vec2 contactPointBetween(const Vec2& onA, const Vec2& onB) {
   return 0.5 * (onA + onB);
 }
 
+/// One point of a contact manifold: where it is, how deep, and the impulses applied there.
 struct ContactPoint {
   Vec2 point = Vec2::Zero();    ///< world point where impulses act (contactPointBetween)
   Vec2 anchorA = Vec2::Zero();  ///< the point on A's surface, in A's body frame
   Vec2 anchorB = Vec2::Zero();  ///< the point on B's surface, in B's body frame
   double penetration = 0.0;     ///< m, along the normal; negative is a gap
+  /// the features that made it, to carry impulses between steps
   FeatureId id = 0;
   /// m, world frame: the arms from A's and B's centres to `point`, and the penetration, when the
   /// narrow phase found the point. A recycled manifold (world.h) keeps the arms as they were,
   /// unturned, for soft step's Jacobians, and measures its overlap from them.
   Vec2 foundArmA = Vec2::Zero();
+  /// B's arm, as found
   Vec2 foundArmB = Vec2::Zero();
+  /// the penetration, as found
   double foundPenetration = 0.0;
 
   /// N s. Total normal impulse the solver applied this step (the accumulated impulse of
@@ -64,7 +68,9 @@ struct ContactPoint {
   /// the next step (Box2D v3's `normalImpulse`; the totals above are v3's `totalNormalImpulse`).
   /// They differ in a step with an impact, whose impulse the first substep spends.
   double substepNormalImpulse = 0.0;
+  /// N s, the friction impulse of the last substep
   double substepTangentImpulse = 0.0;
+  /// static, dynamic or none this step
   FrictionState friction = FrictionState::None;
   /// The micro-collision resolver gave this point a bounce this step. Carried to the next step
   /// by feature id, so the bounce is not warm-started as if it were resting weight.
@@ -90,16 +96,20 @@ struct FoundPose {
   double distance = 0.0;                 ///< m: the contact distance the points were found within
 };
 
+/// A contact between two bodies: one normal and up to two points (the sign convention above).
 struct Manifold {
   int bodyA = -1;  ///< index into the world's bodies
+  /// index into the world's bodies
   int bodyB = -1;
   Vec2 normal = Vec2(0.0, 1.0);  ///< unit, from A to B
   double friction = 0.0;         ///< mixed coefficient of friction
   double restitution = 0.0;      ///< mixed coefficient of restitution
   int pointCount = 0;            ///< 0, 1 or 2
+  /// the first pointCount are used
   std::array<ContactPoint, 2> points;
   FoundPose found;  ///< the bodies' pose when the points were found (recycled manifolds keep it)
 
+  /// The friction direction: the normal turned a quarter turn counter-clockwise.
   Vec2 tangent() const { return leftPerpendicular(normal); }
 };
 

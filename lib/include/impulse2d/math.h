@@ -57,9 +57,12 @@ inline Vec2 directionOr(const Vec2& from, const Vec2& to, const Vec2& fallback) 
 
 /// An axis-aligned bounding box.
 struct Aabb {
+  /// m, the lower left corner
   Vec2 lower = Vec2::Zero();
+  /// m, the upper right corner
   Vec2 upper = Vec2::Zero();
 
+  /// True when the boxes overlap or touch.
   bool overlaps(const Aabb& other) const {
     return lower.x() <= other.upper.x() && other.lower.x() <= upper.x() &&
            lower.y() <= other.upper.y() && other.lower.y() <= upper.y();

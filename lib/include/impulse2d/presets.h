@@ -14,9 +14,9 @@ namespace impulse2d {
 /// One published method: the solver it runs on, its name in scene files (`[solver] preset`) and
 /// on the command line (`--preset`), one line saying what it is, and the settings it sets.
 struct Preset {
-  std::string solver;
-  std::string name;
-  std::string summary;
+  std::string solver;   ///< the solver it runs on: "micro", "sequential", "soft_step"
+  std::string name;     ///< its name in scene files and on the command line
+  std::string summary;  ///< one line saying what it is (i2d presets)
   /// Replaces the solver's settings in `settings` with the published method's.
   void (*apply)(SolverSettings& settings);
 };

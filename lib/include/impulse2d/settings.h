@@ -28,10 +28,15 @@ struct Box2dSettings {
 /// The settings of every solver; a scene picks one solver, and its [solver] table sets that
 /// solver's struct.
 struct SolverSettings {
+  /// "micro"
   MicroCollisionSettings micro;
+  /// "sequential"
   SequentialImpulseSettings sequential;
+  /// "reference"
   ReferenceSolverSettings reference;
+  /// "box2d"
   Box2dSettings box2d;
+  /// "soft_step"
   SoftStepSettings softStep;
 };
 
@@ -39,6 +44,7 @@ struct SolverSettings {
 /// line and for listing it in `i2d check`.
 struct SettingField {
   std::string name;  ///< snake_case, as in scene files
+  /// the field in the struct
   std::variant<double*, int*, bool*, Vec2*> value;
 };
 

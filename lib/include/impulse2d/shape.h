@@ -18,7 +18,9 @@ class ShapeError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// A circle or a convex polygon, in the body frame with the centre of mass at the origin.
 struct Shape {
+  /// circle or polygon
   ShapeType type = ShapeType::Circle;
   double radius = 0.0;         ///< circle radius (m); 0 for polygons
   std::vector<Vec2> vertices;  ///< polygon vertices, counter-clockwise, centroid at the origin
@@ -34,6 +36,7 @@ struct MassProperties {
 /// Where the centroid of a polygon given in some frame lies, and the polygon moved so it is at the
 /// origin. Scene loading uses it so the body's position is its centre of mass.
 struct CentredPolygon {
+  /// the polygon, its centroid at the origin
   Shape shape;
   Vec2 centroid = Vec2::Zero();  ///< in the frame the vertices were given in
 };

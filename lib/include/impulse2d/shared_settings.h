@@ -7,6 +7,7 @@
 
 namespace impulse2d {
 
+/// The settings of a world: gravity, the time step and what every step does besides solving.
 struct WorldSettings {
   /// m/s^2. Earth's gravity, downwards.
   Vec2 gravity = Vec2(0.0, -9.81);

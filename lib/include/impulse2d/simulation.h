@@ -19,6 +19,7 @@ namespace impulse2d {
 /// what(): "body NAME became non-finite at step N (solver S)".
 class NonFiniteState : public std::runtime_error {
  public:
+  /// The error naming the body, the step and the solver.
   NonFiniteState(const std::string& body, long step, const std::string& solver);
 };
 
@@ -31,15 +32,19 @@ bool hasFiniteState(const Body& body, const Vec2& gravity);
 void stopAtNonFiniteBody(const std::vector<Body>& bodies, const Vec2& gravity, long step,
                          const std::string& solver);
 
+/// A runnable simulation: our World with any of its solvers, or Box2D.
 class Simulation {
  public:
   virtual ~Simulation() = default;
   /// Advances one fixed time step.
   virtual void step() = 0;
+  /// The bodies as they stand, in scene order.
   virtual const std::vector<Body>& bodies() const = 0;
   /// The contacts of the last step, with the impulses applied at them.
   virtual const std::vector<Manifold>& manifolds() const = 0;
+  /// The solver's name as scene files write it ("micro", ..., "box2d").
   virtual std::string solverName() const = 0;
+  /// The world's settings (gravity, time step, ...).
   virtual const WorldSettings& settings() const = 0;
   /// Steps taken so far.
   virtual long stepCount() const = 0;

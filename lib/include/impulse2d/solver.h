@@ -16,7 +16,9 @@ namespace impulse2d {
 /// One thing a solver did to one contact point, reported to an observer as it happens, so a
 /// student can watch a step iteration by iteration (`i2d run --trace-step`).
 struct SolverEvent {
+  /// Which pass of the step the event belongs to.
   enum class Phase { Velocity, Position };
+  /// velocity or position pass
   Phase phase = Phase::Velocity;
   /// 0-based: the micro-collision resolver counts its impulses (or moves) in this step,
   /// sequential impulses count their sweeps.
@@ -30,6 +32,7 @@ struct SolverEvent {
   double tangentImpulse = 0.0;  ///< N s applied by this event along the tangent
 };
 
+/// Watches a solver event by event (a traced step).
 class SolverObserver {
  public:
   virtual ~SolverObserver() = default;
@@ -40,8 +43,11 @@ class SolverObserver {
 
 /// What a solver works on in one step.
 struct StepContext {
+  /// the world's bodies
   std::vector<Body>& bodies;
+  /// the contacts to solve
   std::vector<Manifold>& manifolds;
+  /// s, the time step
   double dt;
   SolverObserver* observer = nullptr;  ///< null unless the step is being traced
   /// m/s^2. The world's gravity, for a solver that integrates the bodies itself.
@@ -56,8 +62,11 @@ struct StepContext {
 /// How the last solve went. Iterative methods report their iterations; the reference reports its
 /// residual and whether it met its tolerance, never a silent half answer.
 struct SolveReport {
+  /// iterations (or substeps) made
   int iterations = 0;
+  /// what was left when the solve stopped
   double residual = 0.0;
+  /// the solve met its tolerance
   bool converged = true;
 };
 
@@ -81,6 +90,7 @@ struct ContactRecycling {
   bool inWorldFrame = false;
 };
 
+/// A contact method: one interface, one file per method (docs/architecture.md).
 class ContactSolver {
  public:
   virtual ~ContactSolver() = default;
@@ -90,6 +100,7 @@ class ContactSolver {
   virtual void solveVelocities(const StepContext& context) = 0;
   /// Remove the penetration that remains after the positions moved, without adding velocity.
   virtual void solvePositions(const StepContext& context) = 0;
+  /// How the last solve went.
   virtual SolveReport lastReport() const { return {}; }
   /// True for a method that moves the bodies itself within its own substeps (soft step): the
   /// world then leaves velocities and positions to it and only clears the forces it used.

@@ -47,6 +47,7 @@ struct StepStatistics {
   int solvedManifolds = 0;    ///< manifolds given to the solver
 };
 
+/// Our world: bodies stepped in the order written above, contacts resolved by one ContactSolver.
 class World : public Simulation {
  public:
   /// Throws std::invalid_argument when settings.substeps < 1.
@@ -71,7 +72,9 @@ class World : public Simulation {
   /// sleep.
   void setObserver(SolverObserver* observer) override { observer_ = observer; }
 
+  /// the contact method
   ContactSolver& solver() { return *solver_; }
+  /// what the last step did
   const StepStatistics& lastStepStatistics() const { return statistics_; }
 
   /// Step 2 alone: rebuilds the manifolds from the current positions (recycling those the solver

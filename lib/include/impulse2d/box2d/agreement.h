@@ -35,6 +35,7 @@ inline constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
 /// One dynamic body in one method.
 struct BodyFigures {
   int body = -1;  ///< index into the scene's bodies
+  /// the body's name in the scene
   std::string name;
   double finalHeight = 0.0;    ///< m, height of the centre of mass after the last step
   double slideDistance = 0.0;  ///< m, path of the centre of mass over the steps it was touching
@@ -48,6 +49,7 @@ struct BodyFigures {
 
 /// One method over the whole run.
 struct MethodFigures {
+  /// the solver name, or "box2d"
   std::string method;
   std::vector<BodyFigures> bodies;  ///< the dynamic bodies, in scene order
   /// s. The first time after which every dynamic body stays at rest; kNotMeasured if one still
@@ -59,13 +61,19 @@ struct MethodFigures {
   /// Empty, or why the method stopped (the reference solver missing its tolerance, say): its
   /// figures then cover the stepsRun steps before.
   std::string failure;
+  /// steps the method ran (all of them unless it failed)
   long stepsRun = 0;
 };
 
+/// How far each method strays from Box2D over one scene's run (`i2d agree`).
 struct Agreement {
+  /// the scene's name
   std::string scene;
+  /// steps each method ran
   long steps = 0;
+  /// s, the time step
   double dt = 0.0;
+  /// the thresholds the figures were measured with
   AgreementSettings settings;
   /// methods[0] is the reference, Box2D; its differences are zero.
   std::vector<MethodFigures> methods;

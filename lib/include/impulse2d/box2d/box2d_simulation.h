@@ -34,6 +34,7 @@ double box2dPolygonSkin();
 /// Box2D's linear slop (b2_linearSlop = 0.005 m): the overlap its position pass leaves.
 double box2dLinearSlop();
 
+/// Box2D 2.4 running a scene: the behaviour reference, read like any Simulation.
 class Box2dSimulation : public Simulation {
  public:
   /// Throws std::invalid_argument for a polygon Box2D cannot hold: more than 8 vertices

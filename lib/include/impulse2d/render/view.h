@@ -8,6 +8,7 @@
 
 namespace impulse2d {
 
+/// A scene's view: the image size, and the centre and scale when the file gives them.
 struct ViewDef {
   int width = 800;              ///< pixels
   int height = 600;             ///< pixels

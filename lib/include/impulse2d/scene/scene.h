@@ -15,6 +15,7 @@ namespace impulse2d {
 /// One body as a scene states it. Defaults are those a scene file gets when it omits a key.
 struct BodyDef {
   std::string name;  ///< default "body<index>"
+  /// static or dynamic
   BodyType type = BodyType::Dynamic;
   Shape shape = makeCircle(0.5);  ///< centred on the centre of mass
   Vec2 position = Vec2::Zero();   ///< m, centre of mass
@@ -22,19 +23,27 @@ struct BodyDef {
   Vec2 velocity = Vec2::Zero();   ///< m/s
   double angularVelocity = 0.0;   ///< rad/s
   double density = 1.0;           ///< kg/m^2
+  /// coefficient of friction
   double friction = 0.5;
+  /// coefficient of restitution
   double restitution = 0.0;
   AppliedLoad load;  ///< force, force_rate, force_point, torque (none by default)
 };
 
+/// What a run is made of: the world, the solver and the bodies (a scene file holds one).
 struct Scene {
   std::string name = "scene";  ///< file name without extension
+  /// gravity, time step and the rest of [world]
   WorldSettings world;
+  /// steps a run takes
   int steps = 600;
+  /// "micro", "sequential", "reference", "soft_step" or "box2d"
   std::string solver = "sequential";
   /// The solver's preset (presets.h) its settings started from; empty: our defaults.
   std::string preset;
+  /// the [solver] table
   SolverSettings solverSettings;
+  /// in the order the world indexes them
   std::vector<BodyDef> bodies;
 };
 

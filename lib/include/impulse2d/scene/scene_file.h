@@ -16,22 +16,27 @@
 
 namespace impulse2d {
 
-/// A scene that cannot be loaded. what() is exactly "FILE:LINE:COLUMN: message" (lines and
-/// columns from 1), or "FILE: message" when the file itself cannot be read.
 /// A scene as its file states it: the physics and, from its [render] table, how frames look at
 /// it. It is a Scene, so a physics caller can take it as one.
 struct SceneFile : Scene {
+  /// the [render] table
   ViewDef view;
 };
 
+/// A scene that cannot be loaded. what() is exactly "FILE:LINE:COLUMN: message" (lines and
+/// columns from 1), or "FILE: message" when the file itself cannot be read.
 class SceneError : public std::runtime_error {
  public:
+  /// An error at LINE:COLUMN of `source`.
   SceneError(const std::string& source, int line, int column, const std::string& message);
+  /// An error of `source` as a whole.
   SceneError(const std::string& source, const std::string& message);
 
+  /// the file
   const std::string& source() const { return source_; }
   int line() const { return line_; }      ///< 0 when the error has no location
   int column() const { return column_; }  ///< 0 when the error has no location
+  /// the message without its location
   const std::string& message() const { return message_; }
 
  private:

@@ -43,7 +43,9 @@ struct IslandPoint {
   std::array<std::array<Eigen::Vector3d, 2>, 2> jacobian{};
   /// The part of the relative velocities that comes from static bodies (normal, tangent).
   std::array<double, 2> staticVelocity{{0.0, 0.0}};
+  /// m/s, what the normal velocity must reach
   double targetNormalVelocity = 0.0;
+  /// mixed coefficient of friction
   double friction = 0.0;
   /// The guess at this point is last step's answer there (kept by feature id), not a zero.
   bool carried = false;
@@ -101,6 +103,7 @@ double inverseEffectiveMass(const Point& point, int axis, const Eigen::VectorXd&
 /// pyramid40's first step on a path of 59-64 factorizations instead of 9
 /// (docs/global-reference.md).
 struct IslandProblem {
+  /// the island's contact points
   std::vector<IslandPoint> points;
   Eigen::VectorXd inverseMass;           ///< 3 per body: 1/m, 1/m, 1/I
   Eigen::VectorXd velocity;              ///< 3 per body: (vx, vy, ω) before the solve
@@ -118,11 +121,15 @@ Eigen::VectorXd delassusTimes(const IslandProblem& problem, const Eigen::VectorX
 /// W's diagonal: each point's inverse effective mass along its normal and its tangent.
 Eigen::VectorXd delassusDiagonal(const IslandProblem& problem);
 
+/// The active set method's answer for one island.
 struct ActiveSetAnswer {
+  /// an answer within tolerance was found
   bool solved = false;
+  /// factorizations it took
   int factorizations = 0;
   Eigen::VectorXd impulses;          ///< (λn, λt) per point
   std::vector<ContactState> states;  ///< each point's state in the answer
+  /// why not, when not solved
   std::string failure;
 };
 
@@ -132,8 +139,11 @@ struct ActiveSetAnswer {
 class PosedSystem {
  public:
   virtual ~PosedSystem() = default;
+  /// unknowns
   virtual Eigen::Index size() const = 0;
+  /// A x
   virtual Eigen::VectorXd times(const Eigen::VectorXd& x) const = 0;
+  /// A
   virtual Eigen::SparseMatrix<double> matrix() const = 0;
   /// S's diagonal.
   virtual const Eigen::VectorXd& shift() const = 0;
@@ -169,7 +179,9 @@ class KeptFactorization {
   /// factorization fails. A centre within ε of the answer leaves r·ε to take out.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs, const Eigen::VectorXd& centre);
 
+  /// made so far
   int factorizations() const { return factorizations_; }
+  /// why the last one failed
   const std::string& lastError() const { return lastError_; }
 
  private:

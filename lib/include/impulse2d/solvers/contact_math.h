@@ -17,9 +17,13 @@ namespace impulse2d {
 /// What an iterative solver's impulses read and change of a body: a compact copy of its
 /// velocities and inverse mass and inertia (zero for static bodies), written back at the end.
 struct SolverBody {
+  /// m/s
   Vec2 velocity = Vec2::Zero();
+  /// rad/s
   double angularVelocity = 0.0;
+  /// 1/kg
   double inverseMass = 0.0;
+  /// 1/(kg m^2)
   double inverseInertia = 0.0;
 };
 

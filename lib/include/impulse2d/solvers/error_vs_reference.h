@@ -56,8 +56,10 @@ class ErrorVsReference;
 std::unique_ptr<ErrorVsReference> makeWatchedSolver(const std::string& method,
                                                     const SolverSettings& settings);
 
+/// A method watched by the reference: each velocity solve is compared with the exact one.
 class ErrorVsReference : public ContactSolver {
  public:
+  /// `method` watched by a reference solver with `reference` settings.
   ErrorVsReference(std::unique_ptr<ContactSolver> method, const ReferenceSolverSettings& reference)
       : method_(std::move(method)), reference_(reference) {}
 
@@ -69,6 +71,7 @@ class ErrorVsReference : public ContactSolver {
 
   /// One entry per velocity solve so far.
   const std::vector<ReferenceError>& errors() const { return errors_; }
+  /// the watched method
   ContactSolver& method() { return *method_; }
 
  private:

@@ -18,10 +18,15 @@ namespace impulse2d {
 /// The answer of an LCP solver. `solved` is false on a secondary ray (no solution found this
 /// way) or at the pivot limit; `failure` then says which, and z must not be used.
 struct LcpSolution {
+  /// the unknowns
   Eigen::VectorXd z;
+  /// w = M z + q
   Eigen::VectorXd w;
+  /// pivots made
   int pivots = 0;
+  /// z and w are a solution
   bool solved = false;
+  /// why not, when not solved
   std::string failure;
 };
 
@@ -35,7 +40,9 @@ enum class RatioTest {
 /// (I·w − M·z − d·z0 = q) and the ratio test. Each gives its own path to the same solutions;
 /// where round-off or a tiny pivot defeats one on a degenerate problem, another often succeeds.
 struct LemkePath {
+  /// d > 0
   Eigen::VectorXd covering;
+  /// how near-ties are broken
   RatioTest ratioTest = RatioTest::Lexicographic;
 };
 

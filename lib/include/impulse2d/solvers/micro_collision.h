@@ -18,8 +18,10 @@
 
 namespace impulse2d {
 
+/// The lecture's micro-collision resolver, worst contact first (docs/micro-collisions.md).
 class MicroCollisionSolver : public ContactSolver {
  public:
+  /// A resolver with these settings.
   explicit MicroCollisionSolver(const MicroCollisionSettings& settings) : settings_(settings) {}
 
   std::string name() const override { return "micro"; }
@@ -27,6 +29,7 @@ class MicroCollisionSolver : public ContactSolver {
   void solvePositions(const StepContext& context) override;
   SolveReport lastReport() const override { return report_; }
 
+  /// its settings
   const MicroCollisionSettings& settings() const { return settings_; }
 
  private:

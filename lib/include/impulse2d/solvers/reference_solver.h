@@ -41,12 +41,15 @@ namespace impulse2d {
 /// exceeds the tolerance). Its message starts "reference solver: " and says why.
 class ReferenceSolveFailure : public std::runtime_error {
  public:
+  /// A failure for `reason`.
   explicit ReferenceSolveFailure(const std::string& reason)
       : std::runtime_error("reference solver: " + reason) {}
 };
 
+/// All contact impulses solved together as one LCP: the accuracy reference.
 class ReferenceSolver : public ContactSolver {
  public:
+  /// A reference with these settings.
   explicit ReferenceSolver(const ReferenceSolverSettings& settings) : settings_(settings) {}
 
   std::string name() const override { return "reference"; }
@@ -74,6 +77,7 @@ class ReferenceSolver : public ContactSolver {
   /// dynamic body. Formed on request: the solve itself forms only small islands' blocks.
   Eigen::SparseMatrix<double> delassusMatrix() const;
 
+  /// its settings
   const ReferenceSolverSettings& settings() const { return settings_; }
 
  private:

@@ -20,8 +20,10 @@
 
 namespace impulse2d {
 
+/// Sequential impulses with accumulated impulses and warm starting (docs/sequential-impulses.md).
 class SequentialImpulseSolver : public ContactSolver {
  public:
+  /// A solver with these settings.
   explicit SequentialImpulseSolver(const SequentialImpulseSettings& settings)
       : settings_(settings) {}
 
@@ -33,6 +35,7 @@ class SequentialImpulseSolver : public ContactSolver {
   /// sweep (N s).
   SolveReport lastReport() const override { return report_; }
 
+  /// its settings
   const SequentialImpulseSettings& settings() const { return settings_; }
 
  private:

@@ -31,8 +31,10 @@ Softness makeSoftness(double hertz, double dampingRatio, double h);
 /// The limit of infinite stiffness: the whole overlap is asked back in one substep.
 Softness rigidSoftness(double h);
 
+/// Box2D v3's soft step: substeps of soft contacts, relax, restitution (docs/soft-step.md).
 class SoftStepSolver : public ContactSolver {
  public:
+  /// A solver with these settings.
   explicit SoftStepSolver(const SoftStepSettings& settings) : settings_(settings) {}
 
   std::string name() const override { return "soft_step"; }
@@ -47,6 +49,7 @@ class SoftStepSolver : public ContactSolver {
   bool wantsSpeculativeContacts() const override { return settings_.speculativeContacts; }
   ContactRecycling contactRecycling() const override;
 
+  /// its settings
   const SoftStepSettings& settings() const { return settings_; }
 
  private:

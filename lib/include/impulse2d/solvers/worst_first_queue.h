@@ -10,6 +10,7 @@
 
 namespace impulse2d {
 
+/// The items waiting to be resolved, worst (largest key) first: a heap that settles lazily.
 class WorstFirstQueue {
  public:
   /// Items 0..keys.size()-1 with the given keys; those above `threshold` wait in the queue.
@@ -21,6 +22,7 @@ class WorstFirstQueue {
     settle();
     return heap_[0].item;
   }
+  /// The key of worst(); the queue must not be empty.
   double worstKey() {
     settle();
     return heap_[0].bound;
