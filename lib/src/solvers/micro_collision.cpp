@@ -224,7 +224,7 @@ MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepCo
 // starts from zero, as does every point with warm starting off.
 Vec2 MicroCollisionSolver::warmStartTotals(const Manifold& manifold,
                                            const ContactPoint& point) const {
-  if (!settings_.warmStart || point.bounced || point.normalImpulse <= 0.0) return Vec2::Zero();
+  if (!settings_.warmStarting || point.bounced || point.normalImpulse <= 0.0) return Vec2::Zero();
   const double frictionLimit = settings_.friction ? manifold.friction * point.normalImpulse : 0.0;
   return Vec2(point.normalImpulse, std::clamp(point.tangentImpulse, -frictionLimit, frictionLimit));
 }
