@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
+#include "impulse2d/collide.h"
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/two_point_block.h"
 
@@ -26,6 +28,42 @@ Vec2 towardsTouchingPoint(const Shape& a, const Shape& b, double separation, con
   const double shareOfA =
       circleA && circleB ? a.radius / (a.radius + b.radius) : (circleB ? 1.0 : 0.0);
   return separation * (shareOfA - 0.5) * normal;
+}
+
+/// A round feature of a contact: a circle's centre and radius, or a polygon's vertex (radius 0),
+/// and how fast it moves.
+struct RoundFeature {
+  Vec2 centre;
+  Vec2 velocity;
+  double radius;
+};
+
+RoundFeature roundFeature(const Body& body, const Vec2& anchor, const Vec2& velocity,
+                          double angularVelocity) {
+  if (body.shape.type == ShapeType::Circle) return {body.position, velocity, body.shape.radius};
+  const Vec2 vertex = body.toWorld(anchor);
+  return {vertex, velocity + cross(angularVelocity, Vec2(vertex - body.position)), 0.0};
+}
+
+/// The normal from A to B when two round features closing across a gap first touch within the
+/// time `reach`, moving at constant velocity; if they do not, when they come closest within it (the
+/// separation along it stays positive, and the contact asks nothing). Empty for features already
+/// overlapping or moving apart.
+std::optional<Vec2> touchingNormal(const RoundFeature& a, const RoundFeature& b, double reach) {
+  const Vec2 between = b.centre - a.centre;
+  const Vec2 closing = b.velocity - a.velocity;
+  const double touching = a.radius + b.radius;
+  const double c = between.squaredNorm() - touching * touching;
+  const double half = between.dot(closing);
+  const double speedSquared = closing.squaredNorm();
+  if (c <= 0.0 || half >= 0.0) return std::nullopt;
+  const double discriminant = half * half - speedSquared * c;
+  double t = std::min(-half / speedSquared, reach);
+  if (discriminant >= 0.0) t = std::min(c / (std::sqrt(discriminant) - half), t);
+  const Vec2 atTouch = between + t * closing;
+  const double distance = atTouch.norm();
+  if (distance <= 0.0) return std::nullopt;
+  return Vec2(atTouch / distance);
 }
 
 }  // namespace
@@ -113,35 +151,81 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     constraint.turnArmB = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyB.shape);
     const double pairHertz =
         bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
-    const SolverBody& a = bodies_[size_t(manifold.bodyA)];
-    const SolverBody& b = bodies_[size_t(manifold.bodyB)];
-    const Vec2 normal = manifold.normal;
-    const Vec2 tangent = manifold.tangent();
     for (int i = 0; i < manifold.pointCount; ++i) {
-      const ContactPoint& point = manifold.points[size_t(i)];
       ConstraintPoint& cp = constraint.points[size_t(i)];
-      const Vec2 shift =
-          settings_.roundSurfaces
-              ? towardsTouchingPoint(bodyA.shape, bodyB.shape, -point.foundPenetration, normal)
-              : Vec2::Zero();
-      cp.armA = point.foundArmA + shift;
-      cp.armB = point.foundArmB + shift;
-      cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(normal);
-      const auto inverseMass = [&](const Vec2& d) {
-        const double rA = cross(cp.armA, d);
-        const double rB = cross(cp.armB, d);
-        return a.inverseMass + b.inverseMass + a.inverseInertia * rA * rA +
-               b.inverseInertia * rB * rB;
-      };
-      const double kNormal = inverseMass(normal);
-      const double kTangent = inverseMass(tangent);
-      cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
-      cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
+      placePoint(manifold, manifold.points[size_t(i)], bodyA, bodyB, cp);
       cp.softness = pointSoftness(pairHertz, h);
-      cp.normalImpulse = settings_.warmStarting ? point.substepNormalImpulse : 0.0;
-      cp.tangentImpulse = settings_.warmStarting ? point.substepTangentImpulse : 0.0;
-      cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
     }
+    if (settings_.speculativeAtTouch) placeAtTouch(context, constraint);
+    prepareMasses(constraint);
+  }
+}
+
+// A point's arms and separation base as found (with roundSurfaces, moved along the normal to
+// where a circle will touch), and its impulses to warm start from.
+void SoftStepSolver::placePoint(const Manifold& manifold, const ContactPoint& point,
+                                const Body& bodyA, const Body& bodyB, ConstraintPoint& cp) const {
+  const Vec2 shift =
+      settings_.roundSurfaces
+          ? towardsTouchingPoint(bodyA.shape, bodyB.shape, -point.foundPenetration, manifold.normal)
+          : Vec2::Zero();
+  cp.armA = point.foundArmA + shift;
+  cp.armB = point.foundArmB + shift;
+  cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(manifold.normal);
+  cp.normalImpulse = settings_.warmStarting ? point.substepNormalImpulse : 0.0;
+  cp.tangentImpulse = settings_.warmStarting ? point.substepTangentImpulse : 0.0;
+}
+
+// A speculative contact between round surfaces (speculativeAtTouch) is turned to where the two
+// will touch within the step and one substep more (the last relax solve keeps a gap from closing
+// within the next substep), each moving at its mean velocity over the step: the normal then runs
+// between the two features, each arm reaches the touching point, and the separation base is the
+// gap now along that normal, which the solver closes as the bodies reach it.
+void SoftStepSolver::placeAtTouch(const StepContext& context, Constraint& constraint) const {
+  const Manifold& manifold = context.manifolds[size_t(constraint.manifold)];
+  const Body& bodyA = context.bodies[size_t(manifold.bodyA)];
+  const Body& bodyB = context.bodies[size_t(manifold.bodyB)];
+  if (manifold.pointCount != 1 || !normalRunsToCentre(bodyA.shape, bodyB.shape, manifold)) return;
+  const SolverBody& a = bodies_[size_t(manifold.bodyA)];
+  const SolverBody& b = bodies_[size_t(manifold.bodyB)];
+  const double halfSteps = 0.5 * settings_.substeps;
+  const ContactPoint& point = manifold.points[0];
+  const RoundFeature featureA = roundFeature(
+      bodyA, point.anchorA, Vec2(a.velocity + halfSteps * a.velocityPerSubstep), a.angularVelocity);
+  const RoundFeature featureB = roundFeature(
+      bodyB, point.anchorB, Vec2(b.velocity + halfSteps * b.velocityPerSubstep), b.angularVelocity);
+  const double reach = context.dt + 1.0 / inverseSubstep_;
+  const std::optional<Vec2> normal = touchingNormal(featureA, featureB, reach);
+  if (!normal) return;
+  ConstraintPoint& cp = constraint.points[0];
+  const Vec2 onA = featureA.centre + featureA.radius * *normal;
+  const Vec2 onB = featureB.centre - featureB.radius * *normal;
+  cp.armA = onA - bodyA.position;
+  cp.armB = onB - bodyB.position;
+  cp.baseSeparation = (onB - onA).dot(*normal) - (cp.armB - cp.armA).dot(*normal);
+  constraint.normal = *normal;
+  constraint.atTouch = true;
+}
+
+// Each point's normal and tangent masses and its closing velocity before the step.
+void SoftStepSolver::prepareMasses(Constraint& constraint) const {
+  const SolverBody& a = bodies_[size_t(constraint.bodyA)];
+  const SolverBody& b = bodies_[size_t(constraint.bodyB)];
+  const Vec2 normal = constraint.normal;
+  const Vec2 tangent = leftPerpendicular(normal);
+  for (int i = 0; i < constraint.pointCount; ++i) {
+    ConstraintPoint& cp = constraint.points[size_t(i)];
+    const auto inverseMass = [&](const Vec2& d) {
+      const double rA = cross(cp.armA, d);
+      const double rB = cross(cp.armB, d);
+      return a.inverseMass + b.inverseMass + a.inverseInertia * rA * rA +
+             b.inverseInertia * rB * rB;
+    };
+    const double kNormal = inverseMass(normal);
+    const double kTangent = inverseMass(tangent);
+    cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
+    cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
+    cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
   }
 }
 
@@ -360,6 +444,7 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
 void SoftStepSolver::storeImpulses(const StepContext& context) const {
   for (const Constraint& constraint : constraints_) {
     Manifold& manifold = context.manifolds[size_t(constraint.manifold)];
+    if (constraint.atTouch) manifold.normal = constraint.normal;
     for (int i = 0; i < constraint.pointCount; ++i) {
       const ConstraintPoint& cp = constraint.points[size_t(i)];
       ContactPoint& point = manifold.points[size_t(i)];

@@ -93,6 +93,8 @@ class SoftStepSolver : public ContactSolver {
     /// The arms that turn with their bodies within the step: not a circle's (roundSurfaces).
     bool turnArmA = true;
     bool turnArmB = true;
+    /// Normal and arms taken from where round surfaces will touch (speculativeAtTouch).
+    bool atTouch = false;
     std::array<ConstraintPoint, 2> points;
   };
   /// What a point's normal row asks in this sweep: its bias velocity and its softness.
@@ -104,6 +106,10 @@ class SoftStepSolver : public ContactSolver {
 
   void prepareBodies(const StepContext& context, double h);
   void prepareConstraints(const StepContext& context, double h);
+  void placePoint(const Manifold& manifold, const ContactPoint& point, const Body& bodyA,
+                  const Body& bodyB, ConstraintPoint& cp) const;
+  void placeAtTouch(const StepContext& context, Constraint& constraint) const;
+  void prepareMasses(Constraint& constraint) const;
   Softness pointSoftness(double hertz, double h) const;
   void integrateVelocities();
   void warmStart();
