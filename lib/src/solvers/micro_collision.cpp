@@ -132,9 +132,8 @@ void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
   Eigen::Matrix3d k;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      k(i, j) = (a.inverseMass + b.inverseMass) * direction[i].dot(direction[j]) +
-                a.inverseInertia * cross(armA[i], direction[i]) * cross(armA[j], direction[j]) +
-                b.inverseInertia * cross(armB[i], direction[i]) * cross(armB[j], direction[j]);
+      k(i, j) = couplingPerUnitImpulse(a, b, armA[i], armB[i], direction[i], armA[j], armB[j],
+                                       direction[j]);
     }
   }
   // Hadamard's ratio: det K against the product of its diagonal (1 for a diagonal K).
@@ -681,20 +680,18 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
   Pose& a = poses_[points[0]->bodyA];
   Pose& b = poses_[points[0]->bodyB];
   const Vec2 normal = points[0]->normal;
+  std::array<Vec2, 2> armA;
+  std::array<Vec2, 2> armB;
   std::array<double, 2> torqueArmA{};
   std::array<double, 2> torqueArmB{};
   for (int i = 0; i < 2; ++i) {
     const Vec2 point = contactPointNow(*points[i], normal);
-    torqueArmA[i] = cross(Vec2(point - a.position), normal);
-    torqueArmB[i] = cross(Vec2(point - b.position), normal);
+    armA[i] = point - a.position;
+    armB[i] = point - b.position;
+    torqueArmA[i] = cross(armA[i], normal);
+    torqueArmB[i] = cross(armB[i], normal);
   }
-  Mat2 k;
-  for (int i = 0; i < 2; ++i) {
-    for (int j = 0; j < 2; ++j) {
-      k(i, j) = a.inverseMass + b.inverseMass + a.inverseInertia * torqueArmA[i] * torqueArmA[j] +
-                b.inverseInertia * torqueArmB[i] * torqueArmB[j];
-    }
-  }
+  const Mat2 k = normalCouplingMatrix(a, b, normal, armA, armB);
   if (!isWellConditioned(k, settings_.pairConditionLimit)) return false;
   const Vec2 x = solveTwoPointLcp(k, Vec2(-points[0]->penetration, -points[1]->penetration));
   const double turnA = -a.inverseInertia * (torqueArmA[0] * x(0) + torqueArmA[1] * x(1));

@@ -70,6 +70,18 @@ double inverseEffectiveMass(const Masses& a, const Masses& b, const Vec2& armA, 
   return a.inverseMass + b.inverseMass + a.inverseInertia * rA * rA + b.inverseInertia * rB * rB;
 }
 
+/// One entry of a contact matrix K from arms: the relative velocity along dj at the point of
+/// arms (armAj, armBj) per unit impulse along di at the point of arms (armAi, armBi),
+/// (1/m_A + 1/m_B) di·dj + (rAi × di)(rAj × dj)/I_A + (rBi × di)(rBj × dj)/I_B.
+template <typename Masses>
+double couplingPerUnitImpulse(const Masses& a, const Masses& b, const Vec2& armAi,
+                              const Vec2& armBi, const Vec2& di, const Vec2& armAj,
+                              const Vec2& armBj, const Vec2& dj) {
+  return (a.inverseMass + b.inverseMass) * di.dot(dj) +
+         a.inverseInertia * cross(armAi, di) * cross(armAj, dj) +
+         b.inverseInertia * cross(armBi, di) * cross(armBj, dj);
+}
+
 // ---- velocity change per unit impulse: the one building block of every effective mass ----
 
 /// The velocity change of `body` along `measureDirection` at `measurePoint` that a unit impulse
