@@ -17,6 +17,7 @@
 
 namespace fs = std::filesystem;
 using namespace impulse2d::render;
+using impulse2d::Vec2;
 
 namespace {
 
@@ -60,8 +61,15 @@ Outcome i2d(const std::string& arguments, const TemporaryDirectory& directory) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
 }
 
-Canvas greyFrame() {
-  return Canvas(64, 48, Color{128, 128, 128, 255});
+Image greyImage() {
+  return Image(64, 48, Color{128, 128, 128, 255});
+}
+
+/// A frame whose picture is one grey rectangle.
+Frame greyFrame() {
+  Frame frame{Picture(64, 48), Vec2::Zero(), Vec2(64.0, 48.0), "grey"};
+  Drawing(frame.picture).rectangle(Vec2::Zero(), Vec2(64.0, 48.0), Color{128, 128, 128, 255});
+  return frame;
 }
 
 }  // namespace
@@ -88,7 +96,7 @@ TEST_CASE("a PNG on a full disk throws naming the cause and leaves no file", "[d
   const TemporaryDirectory directory;
   const fs::path png = directory / "frame.png";
   onFullDisk(directory / "frame.png.tmp");
-  CHECK_THROWS_WITH(writePng(png, greyFrame()), Catch::Contains(kNoSpace));
+  CHECK_THROWS_WITH(writePng(png, greyImage()), Catch::Contains(kNoSpace));
   CHECK(fs::is_empty(directory.path()));
 }
 

@@ -1,5 +1,6 @@
 // Frames on disk: PNG round trips, numbering every K-th step, the contact sheet's layout, clear
 // errors for unwritable directories, traces (a frame per solver event) and side-by-side panels.
+#include <algorithm>
 #include <fstream>
 
 #include <catch2/catch.hpp>
@@ -17,10 +18,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// A solid frame whose colour encodes its number, so a thumbnail tells which frame it shows.
-Canvas numberedFrame(int number) {
-  return Canvas(160, 120,
-                Color{std::uint8_t(10 * number), 90, std::uint8_t(250 - 10 * number), 255});
+/// The colour that encodes frame `number`, so a thumbnail tells which frame it shows.
+Color numberColour(int number) {
+  return Color{std::uint8_t(8 * number), 90, std::uint8_t(250 - 8 * number), 255};
+}
+
+/// A solid frame of that colour.
+Frame numberedFrame(int number) {
+  Frame frame{Picture(160, 120), Vec2::Zero(), Vec2(160.0, 120.0),
+              "frame " + std::to_string(number)};
+  Drawing(frame.picture).rectangle(Vec2::Zero(), Vec2(160.0, 120.0), numberColour(number));
+  return frame;
 }
 
 FrameRenderer boxRenderer(const test::FixedSimulation& simulation) {
@@ -33,9 +41,9 @@ TEST_CASE("A frame read back from its PNG equals what was drawn", "[png]") {
   const fs::path directory = test::scratchDirectory("round_trip");
   const test::FixedSimulation simulation = test::boxOnGround();
   FrameRenderer renderer = boxRenderer(simulation);
-  const Canvas& frame = renderer.draw(simulation);
+  const Image frame = rasterise(renderer.draw(simulation).picture);
   writePng(directory / "frame.png", frame);
-  const Canvas back = readPng(directory / "frame.png");
+  const Image back = readPng(directory / "frame.png");
   REQUIRE(back.width() == frame.width());
   REQUIRE(back.height() == frame.height());
   CHECK(back.pixels() == frame.pixels());
@@ -54,7 +62,7 @@ TEST_CASE("Frames are numbered from 0 without gaps, every K-th step", "[frames][
     CHECK(fs::is_regular_file(root / "drop" / name));
   }
   CHECK_FALSE(fs::exists(root / "drop" / "drop_00004.png"));
-  CHECK(readPng(root / "drop" / "drop_00002.png").at(0, 0) == numberedFrame(6).at(0, 0));
+  CHECK(readPng(root / "drop" / "drop_00002.png").at(0, 0) == numberColour(6));
 }
 
 TEST_CASE("A new run removes the numbered frames of the last one, nothing else",
@@ -82,12 +90,12 @@ TEST_CASE("The contact sheet shows evenly spaced frames, first and last, in a gr
   }
   CHECK(evenlySpaced(5, 12) == std::vector<int>{0, 1, 2, 3, 4});
 
-  const SheetLayout layout = contactSheetLayout(30, 160, 120, settings);
+  const SheetLayout layout = contactSheetLayout(evenlySpaced(30, 12), 160, 120, settings);
   CHECK(layout.columns == 4);
   CHECK(layout.rows == 3);
   CHECK(layout.thumbnailHeight == settings.sheetThumbnailWidth * 120 / 160);
   CHECK(layout.width == 4 * (settings.sheetThumbnailWidth + settings.spacing) + settings.spacing);
-  const SheetLayout small = contactSheetLayout(5, 160, 120, settings);
+  const SheetLayout small = contactSheetLayout(evenlySpaced(5, 12), 160, 120, settings);
   CHECK(small.columns == 4);
   CHECK(small.rows == 2);
 }
@@ -101,14 +109,14 @@ TEST_CASE("The contact sheet file puts each chosen frame in its cell", "[frames]
   }
   const fs::path path = writer.writeContactSheet();
   CHECK(path == root / "drop" / "drop_sheet.png");
-  const Canvas sheet = readPng(path);
-  const SheetLayout layout = contactSheetLayout(30, 160, 120, settings);
+  const Image sheet = readPng(path);
+  const SheetLayout layout = contactSheetLayout(evenlySpaced(30, 12), 160, 120, settings);
   REQUIRE(sheet.width() == layout.width);
   REQUIRE(sheet.height() == layout.height);
   for (std::size_t k = 0; k < layout.frames.size(); ++k) {
     const int x = layout.thumbnailX(int(k)) + layout.thumbnailWidth / 2;
     const int y = layout.thumbnailY(int(k)) + layout.thumbnailHeight / 2;
-    CHECK(sheet.at(x, y) == numberedFrame(layout.frames[k]).at(0, 0));
+    CHECK(sheet.at(x, y) == numberColour(layout.frames[k]));
   }
 }
 
@@ -144,22 +152,40 @@ TEST_CASE("A trace writes one frame per solver event, the contact highlighted", 
   CHECK(writer.steps() == std::vector<long>{4, 4, 4});
   CHECK(writer.framePath(0) == root / "box" / "box_step00004_00000.png");
   CHECK(fs::exists(writer.sheetPath()));
-  const Canvas first = readPng(writer.framePath(0));
-  const Vec2 ring = renderer.camera().toPixels(Vec2(-0.5, 0.0)) +
-                    Vec2(renderer.settings().highlightRadius - 1.0, 0.0);
-  CHECK(first.at(int(ring.x()), int(ring.y())) == renderer.settings().colours.highlight);
+  // Each frame is kept by the writer, captioned with its event for the sheet.
+  REQUIRE(writer.frames().size() == 3);
+  CHECK(writer.frames()[0].caption == "velocity 0: contact 0.0");
+  CHECK(writer.frames()[1].caption == "velocity 1: contact 0.1");
 }
 
-TEST_CASE("Panels sit side by side under their labels", "[panels]") {
+TEST_CASE("A trace sheet shows every velocity event before position events", "[trace][sheet]") {
+  // 4 velocity events among 20 position events, 6 places: all 4, then 2 of the others.
+  std::vector<bool> velocity(24, false);
+  for (const int k : {3, 9, 15, 21}) velocity[std::size_t(k)] = true;
+  const std::vector<int> chosen = chooseFrames(velocity, 6);
+  CHECK(chosen.size() == 6);
+  for (const int k : {3, 9, 15, 21}) {
+    CHECK(std::find(chosen.begin(), chosen.end(), k) != chosen.end());
+  }
+  CHECK(std::is_sorted(chosen.begin(), chosen.end()));
+}
+
+TEST_CASE("Panels sit in the grid that fills a 16:9 slide best, under their labels", "[panels]") {
   RenderSettings settings;
-  const Canvas red(100, 80, Color{255, 0, 0, 255});
-  const Canvas blue(100, 80, Color{0, 0, 255, 255});
-  const Canvas image = composePanels({{&red, "micro"}, {&blue, "sequential"}}, settings);
-  const int label = panelLabelHeight(settings);
-  CHECK(image.width() == 200 + 3 * settings.spacing);
-  CHECK(image.height() == 80 + label + 2 * settings.spacing);
-  const int y = settings.spacing + label + 40;
-  CHECK(image.at(settings.spacing + 50, y) == red.at(0, 0));
-  CHECK(image.at(2 * settings.spacing + 150, y) == blue.at(0, 0));
-  CHECK(image.at(settings.spacing + 1, settings.spacing + 1) == settings.colours.sheetLabel);
+  // Scaled onto a 16:9 slide, panels cover: two side by side 0.61 of it, one above the other
+  // 0.30; four 800 x 640 in 2 x 2 0.69, in 3 x 2 0.62; four tall ones in a row 0.98.
+  CHECK(panelColumns(2, 800, 640, settings) == 2);
+  CHECK(panelColumns(4, 800, 640, settings) == 2);
+  CHECK(panelColumns(4, 400, 900, settings) == 4);
+  const Frame red = numberedFrame(0);
+  const Frame blue = numberedFrame(30);
+  const Frame image = composePanels({{&red, "micro"}, {&blue, "sequential"}}, settings);
+  const int label = panelLabelHeight(settings, settings.minimumTextSize);
+  CHECK(image.picture.width() == 2 * 160 + 3 * settings.spacing);
+  CHECK(image.picture.height() == 120 + label + 2 * settings.spacing);
+  const Image pixels = rasterise(image.picture);
+  const int y = settings.spacing + label + 60;
+  CHECK(pixels.at(settings.spacing + 80, y) == numberColour(0));
+  CHECK(pixels.at(2 * settings.spacing + 240, y) == numberColour(30));
+  CHECK(pixels.at(settings.spacing + 1, settings.spacing + 1) == settings.colours.sheetLabel);
 }

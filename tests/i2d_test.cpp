@@ -265,7 +265,7 @@ namespace {
 
 /// The size of the PNG image at `path`, decoded in full (so a corrupt file fails here).
 std::pair<int, int> pngSize(const std::string& path) {
-  const impulse2d::render::Canvas image = impulse2d::render::readPng(path);
+  const impulse2d::render::Image image = impulse2d::render::readPng(path);
   return {image.width(), image.height()};
 }
 
@@ -301,12 +301,16 @@ TEST_CASE("run --frames writes a frame every K-th step, the last, and a sheet", 
   CHECK(filesStartingWith(frames, "bouncing_ball") ==
         std::vector<std::string>{"bouncing_ball_00000.png", "bouncing_ball_00001.png",
                                  "bouncing_ball_00002.png", "bouncing_ball_00003.png",
-                                 "bouncing_ball_sheet.png"});
-  // The scene's [render] table asks for 800 x 600; the legend strip goes under it.
-  const int height = 600 + impulse2d::render::legendHeight({}, 800);
-  CHECK(pngSize(frames + "/bouncing_ball_00003.png") == std::pair<int, int>(800, height));
-  const impulse2d::render::SheetLayout sheet =
-      impulse2d::render::contactSheetLayout(4, 800, height, impulse2d::render::RenderSettings{});
+                                 "bouncing_ball_energy.svg", "bouncing_ball_plots.dat",
+                                 "bouncing_ball_plots.gp", "bouncing_ball_sheet.png"});
+  // The scene's [render] table asks for 800 x 600, the heads-up and legend strips included.
+  CHECK(pngSize(frames + "/bouncing_ball_00003.png") == std::pair<int, int>(800, 600));
+  const impulse2d::render::RenderSettings settings;
+  const impulse2d::render::Camera camera =
+      impulse2d::render::fitCamera({}, impulse2d::ViewDef{}, settings, 800, 600);
+  const impulse2d::render::SheetLayout sheet = impulse2d::render::contactSheetLayout(
+      impulse2d::render::evenlySpaced(4, settings.sheetThumbnails), camera.width, camera.height,
+      settings);
   CHECK(pngSize(frames + "/bouncing_ball_sheet.png") ==
         std::pair<int, int>(sheet.width, sheet.height));
   CHECK(outcome.out.find("sheet        " + frames + "/bouncing_ball_sheet.png") !=
@@ -387,17 +391,19 @@ TEST_CASE("compare writes the solvers' frames side by side, labelled, and a shee
   CHECK(outcome.out.find("panel        box2d: solver box2d") != std::string::npos);
   const std::string frames = directory / "bouncing_ball";
   CHECK(filesStartingWith(frames, "bouncing_ball_compare") ==
-        std::vector<std::string>{"bouncing_ball_compare.html", "bouncing_ball_compare_00000.png",
-                                 "bouncing_ball_compare_00001.png",
-                                 "bouncing_ball_compare_00002.png",
-                                 "bouncing_ball_compare_sheet.png"});
-  // Two 800 x 600 panels with their legends, spacing around each, a label bar above.
+        std::vector<std::string>{
+            "bouncing_ball_compare.html", "bouncing_ball_compare_00000.png",
+            "bouncing_ball_compare_00001.png", "bouncing_ball_compare_00002.png",
+            "bouncing_ball_compare_energy.svg", "bouncing_ball_compare_plots.dat",
+            "bouncing_ball_compare_plots.gp", "bouncing_ball_compare_sheet.png"});
+  // Two 800 x 600 panels side by side (the grid nearest 16:9), spacing around each, a label
+  // bar above each.
   const impulse2d::render::RenderSettings settings;
+  const double textSize = impulse2d::render::frameTextSize(settings, 600);
   CHECK(pngSize(frames + "/bouncing_ball_compare_00002.png") ==
-        std::pair<int, int>(2 * 800 + 3 * settings.spacing,
-                            600 + impulse2d::render::legendHeight(settings, 800) +
-                                impulse2d::render::panelLabelHeight(settings) +
-                                2 * settings.spacing));
+        std::pair<int, int>(
+            2 * 800 + 3 * settings.spacing,
+            600 + impulse2d::render::panelLabelHeight(settings, textSize) + 2 * settings.spacing));
 }
 
 TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compare]") {
@@ -410,8 +416,8 @@ TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compa
   CHECK(outcome.exitCode == 0);
   CHECK(outcome.out.find("panel        removal on: solver micro") != std::string::npos);
   CHECK(outcome.out.find("panel        removal off: solver micro") != std::string::npos);
-  // Two frames, the sheet and the viewer page.
-  CHECK(filesStartingWith(directory / "jitter", "jitter_compare").size() == 2 + 1 + 1);
+  // Two frames, the sheet, the viewer page and its energy plot (SVG, data, script).
+  CHECK(filesStartingWith(directory / "jitter", "jitter_compare").size() == 2 + 1 + 1 + 3);
 
   const Outcome badPanel = i2d("compare " + kScenes + "jitter.toml --frames " + (directory / "") +
                                " --panel 'off: solver.no_such_key=1'");
@@ -458,8 +464,18 @@ TEST_CASE("frame options without --frames, and bad overlays, are usage errors",
       {"compare " + scene + " --solvers micro", "error: i2d compare needs --frames DIR\n"},
       {"run " + scene + " --hide arrows",
        "error: unknown overlay 'arrows' for --hide (known: all, contact_normals, contact_points, "
-       "friction_gauges, friction_impulses, heads_up, legend, normal_impulses, rotation_marks, "
-       "velocities)\n"},
+       "friction_gauges, friction_impulses, heads_up, legend, loads, normal_impulses, "
+       "rotation_marks, sliding_velocities, velocities, weights)\n"},
+      {"run " + scene + " --frames x --size 100x100",
+       "error: option --size: each side at least 160 pixels and at most 67108864 pixels in all, "
+       "not '100x100'\n"},
+      {"run " + scene + " --frames x --size 1280",
+       "error: option --size needs WIDTHxHEIGHT in "
+       "pixels (e.g. 1280x720), not '1280'\n"},
+      {"run " + scene + " --frames x --format gif",
+       "error: unknown format 'gif' for --format (known: png, svg, pdf)\n"},
+      {"run " + scene + " --frames x --theme dark",
+       "error: unknown theme 'dark' for --theme (known: screen, print)\n"},
   };
   for (const auto& [arguments, message] : cases) {
     INFO("i2d " << arguments);

@@ -5,11 +5,15 @@
 
 #include <sys/wait.h>
 
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "impulse2d/render/animation.h"
 #include "impulse2d/render/legend.h"
@@ -90,7 +94,7 @@ TEST_CASE("run --animation gif writes a looping GIF of the frames' size", "[outp
   const int width = (unsigned char)gif[6] | ((unsigned char)gif[7] << 8);
   const int height = (unsigned char)gif[8] | ((unsigned char)gif[9] << 8);
   CHECK(width == 800);
-  CHECK(height == 600 + legendHeight({}, 800));
+  CHECK(height == 600);  // the strips lie inside the frame's size
   CHECK(gif.find("NETSCAPE2.0") != std::string::npos);
   CHECK(gif.back() == ';');  // the trailer: the file was finished
 }
@@ -141,4 +145,75 @@ TEST_CASE("an unwritable plot directory and an unknown animation are one error l
   CHECK(unknown.exitCode == 2);  // a bad command line, as every malformed option value
   CHECK(lineCount(unknown.err) == 1);
   CHECK(unknown.err.find("unknown animation kind 'avi'") != std::string::npos);
+}
+
+TEST_CASE("run --contacts: static friction answers the push exactly, then slides at mu N",
+          "[outputs][contacts][friction]") {
+  // pushed_box: 1 kg, mu 0.5, a push growing at 2 N/s; friction holds up to mu m g = 4.905 N.
+  const Scratch scratch;
+  const fs::path csv = scratch.path / "contacts.csv";
+  REQUIRE(
+      i2d("run " + kScenes + "pushed_box.toml --steps 200 --every 20 --contacts " + csv.string(),
+          scratch)
+          .exitCode == 0);
+  std::istringstream rows(readFile(csv));
+  std::string line;
+  std::getline(rows, line);
+  CHECK(line.rfind("step,t,body_a,body_b,point,x,y,nx,ny,normal_impulse_Ns", 0) == 0);
+  // Per step: the summed friction force on the box, the summed limit, the push, any sliding.
+  std::map<long, std::array<double, 3>> sums;
+  std::map<long, bool> sliding;
+  while (std::getline(rows, line)) {
+    std::vector<std::string> fields;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
+    REQUIRE(fields.size() == 20);
+    const long step = std::stol(fields[0]);
+    sums[step][0] += std::stod(fields[12]);  // friction_force_N
+    sums[step][1] += std::stod(fields[14]);  // friction_limit_N
+    // The push on the box, body a or b (the ground's load columns are 0).
+    sums[step][2] = std::stod(fields[16]) + std::stod(fields[18]);
+    sliding[step] = sliding[step] || fields[15] == "sliding";
+  }
+  for (const long step : {40L, 100L, 140L}) {  // the push 1.3, 3.3, 4.6 N: friction holds
+    INFO("step " << step);
+    CHECK(std::abs(sums[step][0]) == Approx(sums[step][2]).epsilon(1e-6));
+    CHECK(sums[step][1] == Approx(4.905).epsilon(1e-6));
+    CHECK_FALSE(sliding[step]);
+  }
+  for (const long step : {160L, 200L}) {  // past 4.905 N: friction is at its limit, sliding
+    INFO("step " << step);
+    CHECK(std::abs(sums[step][0]) == Approx(4.905).epsilon(1e-6));
+    CHECK(sums[step][2] > 4.905);
+    CHECK(sliding[step]);
+  }
+}
+
+TEST_CASE("the viewer of a pushed box plots energy and the push against friction",
+          "[outputs][viewer]") {
+  const Scratch scratch;
+  REQUIRE(i2d("run " + kScenes + "pushed_box.toml --steps 60 --every 30 --frames " +
+                  scratch.path.string(),
+              scratch)
+              .exitCode == 0);
+  const fs::path directory = scratch.path / "pushed_box";
+  const std::string page = readFile(directory / "index.html");
+  CHECK(page.find("\"file\":\"pushed_box_energy.svg\"") != std::string::npos);
+  CHECK(page.find("\"file\":\"pushed_box_forces.svg\"") != std::string::npos);
+  CHECK(readFile(directory / "pushed_box_forces.svg").find("<svg") != std::string::npos);
+  // The plotted data: while friction holds, the friction force is the push (2 N/s × t).
+  std::istringstream data(readFile(directory / "pushed_box_plots.dat"));
+  int rows = 0;
+  for (std::string line; std::getline(data, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    double step, time, kinetic, potential, total, contacts, penetration, push, friction;
+    fields >> step >> time >> kinetic >> potential >> total >> contacts >> penetration >> push >>
+        friction;
+    if (step < 1) continue;
+    CHECK(push == Approx(2.0 * (step - 1) / 60.0).margin(1e-6));
+    CHECK(friction == Approx(push).margin(1e-6));
+    ++rows;
+  }
+  CHECK(rows == 60);
 }

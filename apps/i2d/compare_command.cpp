@@ -45,15 +45,17 @@ SceneFile panelScene(const SceneFile& file, const SceneOptions& common, const Pa
 
 /// The panels side by side make one image: its pixels are refused before anything is drawn.
 void checkPanelPixels(const SceneFile& file, const CompareOptions& options) {
+  const FrameSize size = options.frames.size.value_or(FrameSize{file.view.width, file.view.height});
   const std::string refused =
-      impulse2d::checkFramePixels(file.view.width, file.view.height, int(options.panels.size()));
+      impulse2d::checkFramePixels(size.width, size.height, int(options.panels.size()));
   if (!refused.empty()) throw impulse2d::SceneError(options.scene.scenePath, refused);
 }
 
 std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
   const SceneFile file = impulse2d::loadSceneFile(options.scene.scenePath);
   checkPanelPixels(file, options);
-  const Camera camera = sceneCamera(file, settings);  // --set changes no body: one view for all
+  const Camera camera =
+      sceneCamera(file, options.frames, settings);  // --set changes no body: one view for all
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {
     PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, nullptr, {}};
@@ -111,10 +113,10 @@ std::vector<std::string> plotPanels(const std::string& directory, const std::str
 }
 
 void writePanels(std::vector<PanelRun>& runs, FrameWriter& writer, const RenderSettings& settings) {
+  std::vector<Frame> frames;
+  for (PanelRun& run : runs) frames.push_back(run.renderer->draw(*run.simulation));
   std::vector<Panel> panels;
-  for (PanelRun& run : runs) {
-    panels.push_back({&run.renderer->draw(*run.simulation), run.label});
-  }
+  for (std::size_t k = 0; k < runs.size(); ++k) panels.push_back({&frames[k], runs[k].label});
   writer.write(runs.front().simulation->stepCount(), composePanels(panels, settings));
 }
 
@@ -140,7 +142,7 @@ int compareCommand(const CompareOptions& options) {
   if (options.plots) preparePlotDirectory(*options.plots);
   const SceneFile& first = runs.front().scene;
   FrameWriter writer(*options.frames.directory, first.name, options.every,
-                     comparePrefix(first.name), settings);
+                     comparePrefix(first.name), settings, options.frames.format);
   std::cout << "scene        " << first.name << " (" << runs.size() << " panels, " << first.steps
             << " steps)\n";
   for (long step = 0; step <= first.steps; ++step) {
@@ -151,9 +153,13 @@ int compareCommand(const CompareOptions& options) {
   writer.writeContactSheet();
   printPanelSummary(runs);
   for (const std::string& line : describeFrames(writer)) std::cout << line << "\n";
+  std::vector<PlotSeries> series;
+  for (const PanelRun& run : runs) series.push_back({run.label, run.figures});
+  const std::vector<ViewerPlot> plots = writeViewerPlots(
+      writer.directory(), writer.prefix(), series, hasLoads(*runs.front().simulation));
   for (const std::string& line :
        writeFrameExtras(options.frames, writer, first.name, 1.0 / (first.world.dt * options.every),
-                        panelTable(runs, writer.steps()))) {
+                        panelTable(runs, writer.steps()), plots, first.world.dt)) {
     std::cout << line << "\n";
   }
   if (options.plots) {

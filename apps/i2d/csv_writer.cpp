@@ -1,6 +1,7 @@
 // Atomic CSV writing: the temporary file, the rows, the rename.
 #include "csv_writer.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -28,12 +29,13 @@ std::string csvField(const std::string& text) {
 
 }  // namespace
 
-CsvWriter::CsvWriter(const std::string& path) : path_(path), temporaryPath_(path + ".tmp") {
+CsvWriter::CsvWriter(const std::string& path, const std::string& header)
+    : path_(path), temporaryPath_(path + ".tmp") {
   out_.open(temporaryPath_, std::ios::binary | std::ios::trunc);
   if (!out_) {
     throw RunFailure("cannot write " + temporaryPath_ + ": " + std::strerror(errno));
   }
-  out_ << kHeader << '\n';
+  out_ << header << '\n';
   throwIfWriteFailed();
 }
 
@@ -57,6 +59,45 @@ void CsvWriter::writeStep(long step, double time, const std::vector<impulse2d::B
     }
     out_ << line << '\n';
     ++rowCount_;
+  }
+  throwIfWriteFailed();
+}
+
+void CsvWriter::writeContacts(long step, double time, double impulseTime,
+                              const std::vector<impulse2d::Body>& bodies,
+                              const std::vector<impulse2d::Manifold>& manifolds) {
+  for (const impulse2d::Manifold& manifold : manifolds) {
+    const impulse2d::Body& a = bodies[std::size_t(manifold.bodyA)];
+    const impulse2d::Body& b = bodies[std::size_t(manifold.bodyB)];
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      const impulse2d::ContactPoint& point = manifold.points[i];
+      std::string line = std::to_string(step) + ',';
+      appendNumber(line, time);
+      line += ',' + csvField(a.name) + ',' + csvField(b.name) + ',' + std::to_string(i);
+      const double normalForce = point.normalImpulse / impulseTime;
+      // The loads as they acted while these impulses were applied: from the (sub)step's start.
+      const double loadTime = std::max(0.0, time - impulseTime);
+      const impulse2d::Vec2 loadA =
+          a.isStatic() ? impulse2d::Vec2::Zero() : a.load.forceAt(loadTime);
+      const impulse2d::Vec2 loadB =
+          b.isStatic() ? impulse2d::Vec2::Zero() : b.load.forceAt(loadTime);
+      for (double value : {point.point.x(), point.point.y(), manifold.normal.x(),
+                           manifold.normal.y(), point.normalImpulse, point.tangentImpulse,
+                           normalForce, point.tangentImpulse / impulseTime, manifold.friction,
+                           manifold.friction * normalForce}) {
+        line += ',';
+        appendNumber(line, value);
+      }
+      line += point.friction == impulse2d::FrictionState::Dynamic  ? ",sliding"
+              : point.friction == impulse2d::FrictionState::Static ? ",static"
+                                                                   : ",none";
+      for (double value : {loadA.x(), loadA.y(), loadB.x(), loadB.y()}) {
+        line += ',';
+        appendNumber(line, value);
+      }
+      out_ << line << '\n';
+      ++rowCount_;
+    }
   }
   throwIfWriteFailed();
 }

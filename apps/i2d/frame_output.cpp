@@ -4,6 +4,7 @@
 #include "failures.h"
 #include "impulse2d/render/animation.h"
 #include "impulse2d/render/video.h"
+#include "plots.h"
 
 namespace i2d {
 
@@ -12,11 +13,15 @@ using namespace impulse2d::render;
 RenderSettings renderSettings(const FrameOptions& options) {
   RenderSettings settings;
   settings.overlays = options.overlays;
+  if (options.printTheme) settings.colours = printPalette();
   return settings;
 }
 
-Camera sceneCamera(const impulse2d::SceneFile& scene, const RenderSettings& settings) {
-  return fitCamera(impulse2d::buildBodies(scene), scene.view, settings);
+Camera sceneCamera(const impulse2d::SceneFile& scene, const FrameOptions& options,
+                   const RenderSettings& settings) {
+  const int width = options.size ? options.size->width : scene.view.width;
+  const int height = options.size ? options.size->height : scene.view.height;
+  return fitCamera(impulse2d::buildBodies(scene), scene.view, settings, width, height);
 }
 
 void checkVideoPossible(const FrameOptions& options) {
@@ -34,9 +39,13 @@ void checkVideoPossible(const FrameOptions& options) {
 
 std::vector<std::string> writeFrameExtras(const FrameOptions& options, const FrameWriter& writer,
                                           const std::string& scene, double framesPerSecond,
-                                          const FigureTable& figures) {
+                                          const FigureTable& figures,
+                                          const std::vector<ViewerPlot>& plots,
+                                          double secondsPerStep) {
   std::vector<std::string> lines;
-  lines.push_back("viewer       " + writeViewer(writer, scene, figures, framesPerSecond).string());
+  lines.push_back(
+      "viewer       " +
+      writeViewer(writer, scene, figures, framesPerSecond, plots, secondsPerStep).string());
   if (options.video || options.animation == std::optional<std::string>("mp4")) {
     lines.push_back("video        " + writeVideo(writer, framesPerSecond).string());
   }
@@ -60,22 +69,26 @@ std::vector<std::string> describeFrames(const FrameWriter& writer) {
 
 FrameRecorder::FrameRecorder(const FrameOptions& options, const impulse2d::SceneFile& scene,
                              int every)
-    : renderer_(sceneCamera(scene, renderSettings(options)), scene.name, renderSettings(options)),
-      writer_(*options.directory, scene.name, every, "", renderSettings(options)),
+    : renderer_(sceneCamera(scene, options, renderSettings(options)), scene.name,
+                renderSettings(options)),
+      writer_(*options.directory, scene.name, every, "", renderSettings(options), options.format),
       options_(options),
       scene_(scene.name) {}
 
 void FrameRecorder::record(const impulse2d::Simulation& simulation, long lastStep) {
   const long step = simulation.stepCount();
+  if (step == 0) loads_ = hasLoads(simulation);
   if (isRecorded(step, lastStep, writer_.every())) writer_.write(step, renderer_.draw(simulation));
 }
 
 std::vector<std::string> FrameRecorder::finish(double dt, const std::vector<StepFigures>& figures) {
   writer_.writeContactSheet();
   std::vector<std::string> lines = describeFrames(writer_);
+  const std::vector<ViewerPlot> plots =
+      writeViewerPlots(writer_.directory(), writer_.prefix(), {{scene_, figures}}, loads_);
   for (const std::string& line :
        writeFrameExtras(options_, writer_, scene_, 1.0 / (dt * writer_.every()),
-                        figureTable(figures, writer_.steps()))) {
+                        figureTable(figures, writer_.steps()), plots, dt)) {
     lines.push_back(line);
   }
   return lines;

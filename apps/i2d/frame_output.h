@@ -1,4 +1,4 @@
-// PNG output of the commands: a run's numbered frames, its contact sheet and optional video, as
+// Frame output of the commands: a run's numbered frames, its contact sheet and optional video, as
 // docs/rendering.md lays them out under --frames DIR.
 #pragma once
 
@@ -15,11 +15,13 @@
 
 namespace i2d {
 
-/// The default render settings with the command line's overlay switches.
+/// The default render settings with the command line's overlay switches and theme.
 impulse2d::render::RenderSettings renderSettings(const FrameOptions& options);
 
-/// The camera every frame of the scene shares: fitted to its starting bodies or its [render].
+/// The camera every frame of the scene shares: fitted to its starting bodies or its [render],
+/// in a frame of --size or the [render] table's size.
 impulse2d::render::Camera sceneCamera(const impulse2d::SceneFile& scene,
+                                      const FrameOptions& options,
                                       const impulse2d::render::RenderSettings& settings);
 
 /// Throws RunFailure before a run when --video or --animation mp4 was asked for and ffmpeg is
@@ -27,11 +29,14 @@ impulse2d::render::Camera sceneCamera(const impulse2d::SceneFile& scene,
 void checkVideoPossible(const FrameOptions& options);
 
 /// The video, animation and viewer page of written frames, as asked for; returns summary lines.
-/// The viewer is always written; `figures` fills its table.
+/// The viewer is always written: `figures` fills its table, `plots` go under the frame with a
+/// cursor at each frame's time (step × secondsPerStep).
 std::vector<std::string> writeFrameExtras(const FrameOptions& options,
                                           const impulse2d::render::FrameWriter& writer,
                                           const std::string& scene, double framesPerSecond,
-                                          const impulse2d::render::FigureTable& figures);
+                                          const impulse2d::render::FigureTable& figures,
+                                          const std::vector<impulse2d::render::ViewerPlot>& plots,
+                                          double secondsPerStep);
 
 /// True for the steps a run records: every K-th, and the last.
 bool isRecorded(long step, long lastStep, int every);
@@ -47,8 +52,8 @@ class FrameRecorder {
 
   /// Draws and writes the frame of the simulation's current step if the run records it.
   void record(const impulse2d::Simulation& simulation, long lastStep);
-  /// Writes the contact sheet, the viewer page (its table from `figures`, by step) and the
-  /// video or animation when asked; returns the summary lines.
+  /// Writes the contact sheet, the viewer page (its table and plots from `figures`, by step) and
+  /// the video or animation when asked; returns the summary lines.
   std::vector<std::string> finish(double dt, const std::vector<StepFigures>& figures);
 
  private:
@@ -56,6 +61,7 @@ class FrameRecorder {
   impulse2d::render::FrameWriter writer_;
   FrameOptions options_;
   std::string scene_;
+  bool loads_ = false;  ///< the scene has applied loads: the viewer plots force against friction
 };
 
 }  // namespace i2d

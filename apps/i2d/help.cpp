@@ -60,12 +60,20 @@ options (a value follows the option or '=': --steps 100, --steps=100):
                         --solver, e.g. --set solver.velocity_iterations=20
                         --set world.gravity=[0,-1.62]; a bare word is a string
   --csv FILE            write the trajectory; FILE appears only when complete
+  --contacts FILE       write every contact point's forces per recorded step: bodies, point,
+                        normal, impulses and forces, mu, the limit mu N, static or sliding,
+                        each body's applied load (header below); FILE appears when complete
   --every K             CSV rows and frames every K-th step (K >= 1), plus step 0 and the last
   --frames DIR          write PNG frames DIR/<scene>/<scene>_00000.png, _00001.png, ... (one
                         per recorded step, numbered without gaps), the contact sheet
                         DIR/<scene>/<scene>_sheet.png and the viewer page
                         DIR/<scene>/index.html (open it in a browser: slider, arrow keys,
                         each frame's figures); DIR's parent must exist
+  --format png|svg|pdf  the frames' and sheet's format (default png); svg and pdf are vector
+                        drawings with their text as text
+  --size WxH            the frames' size in pixels, strips included (default: the scene's
+                        [render] width and height); the view is fitted into it
+  --theme print         white background and dark lines, for handouts and slides
   --video               also write DIR/<scene>/<scene>.mp4 in real time (needs --frames and
                         ffmpeg on PATH)
   --animation KIND      also write one file of the frames, in real time: gif (always
@@ -85,16 +93,24 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --no-overlays         frames show the bodies in their state colours only
   --hide LIST           turn these overlays off, LIST a comma-separated list of
                         rotation_marks, contact_points, contact_normals, normal_impulses,
-                        friction_impulses, velocities, heads_up, friction_gauges, legend,
-                        or all
-  --show LIST           turn these overlays on (velocities is off by default); the switches
+                        friction_impulses, loads, weights, sliding_velocities, velocities,
+                        heads_up, friction_gauges, legend, or all
+  --show LIST           turn these overlays on (contact_normals, weights and velocities are
+                        off by default); the switches
                         apply in the order given: --no-overlays --show normal_impulses
 
 frames: each frame's legend strip says what its colours and arrows mean. Body colours: grey
 static, sky blue flying, green resting, purple touching (rolling, bouncing), orange sliding.
-Arrows are contact forces (impulse / dt, N) at a scale fitted per run and written in the legend:
-blue normal, purple friction that held (static), crimson friction on its limit (dynamic). The
-bar under each contact is its friction gauge, |friction| / (mu normal), red when full.
+Everything that acts is an arrow at one force scale, shown in the legend: black applied loads
+with their value, blue normal forces (impulse / dt), violet friction that held (static) and
+vermilion friction on its limit (dynamic), each friction arrow crossed at its limit mu N. The bar
+under each contact is its friction gauge, |friction| / (mu normal), vermilion when full.
+
+contacts CSV: the header is exactly
+  step,t,body_a,body_b,point,x,y,nx,ny,normal_impulse_Ns,friction_impulse_Ns,normal_force_N,
+  friction_force_N,mu,friction_limit_N,friction,load_a_x_N,load_a_y_N,load_b_x_N,load_b_y_N
+(one line) then one row per contact point per recorded step; the normal points from body_a to
+body_b, forces are impulse / dt, friction is static, sliding or none.
 
 CSV: the header is exactly
   step,t,body,x,y,angle_rad,vx,vy,omega_rad_s
@@ -139,8 +155,8 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --solver NAME         the solver of every --panel panel, instead of the scene's
   --set SECTION.KEY=VALUE
                         a change for every panel, applied before the panel's own
-  --video, --animation KIND, --no-overlays, --hide LIST, --show LIST
-                        as for i2d run; the viewer page is DIR/<scene>/<scene>_compare.html
+  --video, --animation KIND, --format, --size, --theme, --no-overlays, --hide LIST,
+  --show LIST           as for i2d run; the viewer page is DIR/<scene>/<scene>_compare.html
   --plots DIR           the panels' figures overlaid, one curve per panel:
                         DIR/<scene>_compare_kinetic.png, ... as for i2d run
 

@@ -146,6 +146,9 @@ const std::map<std::string, bool Overlays::*>& overlayFields() {
       {"contact_normals", &Overlays::contactNormals},
       {"normal_impulses", &Overlays::normalImpulses},
       {"friction_impulses", &Overlays::frictionImpulses},
+      {"loads", &Overlays::loads},
+      {"weights", &Overlays::weights},
+      {"sliding_velocities", &Overlays::slidingVelocities},
       {"velocities", &Overlays::velocities},
       {"heads_up", &Overlays::headsUp},
       {"friction_gauges", &Overlays::frictionGauges},
@@ -229,6 +232,41 @@ void addSceneHandlers(Handlers& handlers, SceneOptions& options, bool withSolver
   };
 }
 
+/// The smallest side --size accepts: room for the strips and a scene.
+constexpr int kMinFrameSide = 160;
+
+/// --size WxH: two integers of at least kMinFrameSide, at most the frame pixel limit a scene's
+/// [render] table has (impulse2d::kMostFramePixels) together.
+FrameSize parseSize(const std::string& text) {
+  const size_t x = text.find('x');
+  const std::string usage =
+      "option --size needs WIDTHxHEIGHT in pixels (e.g. 1280x720), not '" + text + "'";
+  if (x == std::string::npos) throw UsageError(usage);
+  FrameSize size;
+  const char* end = text.data() + text.size();
+  const auto [widthEnd, widthError] = std::from_chars(text.data(), text.data() + x, size.width);
+  const auto [heightEnd, heightError] = std::from_chars(text.data() + x + 1, end, size.height);
+  if (widthError != std::errc() || heightError != std::errc() || widthEnd != text.data() + x ||
+      heightEnd != end) {
+    throw UsageError(usage);
+  }
+  if (size.width < kMinFrameSide || size.height < kMinFrameSide ||
+      long(size.width) * size.height > impulse2d::kMostFramePixels) {
+    throw UsageError("option --size: each side at least " + std::to_string(kMinFrameSide) +
+                     " pixels and at most " + std::to_string(impulse2d::kMostFramePixels) +
+                     " pixels in all, not '" + text + "'");
+  }
+  return size;
+}
+
+impulse2d::render::ImageFormat parseFormat(const std::string& text) {
+  using impulse2d::render::ImageFormat;
+  for (const ImageFormat format : {ImageFormat::Png, ImageFormat::Svg, ImageFormat::Pdf}) {
+    if (text == impulse2d::render::extensionOf(format)) return format;
+  }
+  throw UsageError("unknown format '" + text + "' for --format (known: png, svg, pdf)");
+}
+
 /// --frames, --every, --video and the overlay switches.
 void addFrameHandlers(Handlers& handlers, FrameOptions& options, int& every) {
   handlers.options["--frames"] = [&](const std::string& value) { options.directory = value; };
@@ -241,6 +279,16 @@ void addFrameHandlers(Handlers& handlers, FrameOptions& options, int& every) {
       throw UsageError("unknown animation kind '" + value + "' for --animation (known: gif, mp4)");
     }
     options.animation = value;
+  };
+  handlers.options["--format"] = [&](const std::string& value) {
+    options.format = parseFormat(value);
+  };
+  handlers.options["--size"] = [&](const std::string& value) { options.size = parseSize(value); };
+  handlers.options["--theme"] = [&](const std::string& value) {
+    if (value != "screen" && value != "print") {
+      throw UsageError("unknown theme '" + value + "' for --theme (known: screen, print)");
+    }
+    options.printTheme = value == "print";
   };
   handlers.switches["--no-overlays"] = [&] {
     switchOverlays(options.overlays, "all", false, "--no-overlays");
@@ -293,6 +341,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
   addSceneHandlers(handlers, options.scene, true);
   addFrameHandlers(handlers, options.frames, options.every);
   handlers.options["--csv"] = [&](const std::string& value) { options.csvPath = value; };
+  handlers.options["--contacts"] = [&](const std::string& value) { options.contactsPath = value; };
   handlers.options["--trace-step"] = [&](const std::string& value) {
     options.traceStep = parseInteger(value, "--trace-step", 1);
     checkWorldRange(*options.traceStep, "--trace-step", "steps", value);
@@ -303,18 +352,24 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
   handlers.options["--plots"] = [&](const std::string& value) { options.plots = value; };
   parse(arguments, "run", handlers, options.scene.scenePath);
   if (options.errorVsReferencePath &&
-      (options.csvPath || options.frames.directory || options.traceStep || options.plots)) {
+      (options.csvPath || options.contactsPath || options.frames.directory || options.traceStep ||
+       options.plots)) {
     throw UsageError(
-        "--error-vs-reference writes its own CSV only; leave out --csv, --frames, "
+        "--error-vs-reference writes its own CSV only; leave out --csv, --contacts, --frames, "
         "--trace-step and --plots");
   }
   if (options.frames.video) requireFrames(options.frames, "--video");
+  if ((options.frames.video || options.frames.animation == std::optional<std::string>("mp4")) &&
+      options.frames.format != impulse2d::render::ImageFormat::Png) {
+    throw UsageError("a video is made of PNG frames; leave out --format or --video");
+  }
   if (options.frames.animation) requireFrames(options.frames, "--animation");
   if (options.traceStep) requireFrames(options.frames, "--trace-step");
-  if (options.traceStep && (options.csvPath || options.frames.video || options.frames.animation)) {
+  if (options.traceStep && (options.csvPath || options.contactsPath || options.frames.video ||
+                            options.frames.animation)) {
     throw UsageError(
-        "--trace-step writes trace frames (and --plots) only; leave out --csv, --video and "
-        "--animation");
+        "--trace-step writes trace frames (and --plots) only; leave out --csv, --contacts, "
+        "--video and --animation");
   }
   return options;
 }

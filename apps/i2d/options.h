@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "impulse2d/render/drawing.h"
 #include "impulse2d/render/render_settings.h"
 
 namespace i2d {
@@ -20,9 +21,18 @@ struct SceneOptions {
   std::vector<std::string> settings;  ///< --set section.key=value, applied in order
 };
 
-/// Where PNG frames go and what they show.
+/// A frame's size in pixels, from --size WxH.
+struct FrameSize {
+  int width = 0;
+  int height = 0;
+};
+
+/// Where frames go, in which format and size, and what they show.
 struct FrameOptions {
   std::optional<std::string> directory;  ///< --frames: frames go to DIRECTORY/<scene>/
+  impulse2d::render::ImageFormat format = impulse2d::render::ImageFormat::Png;  ///< --format
+  std::optional<FrameSize> size;         ///< --size: replaces the scene's [render] width and height
+  bool printTheme = false;               ///< --theme print: white background, dark lines
   bool video = false;                    ///< --video: an MP4 of the frames through ffmpeg
   std::optional<std::string> animation;  ///< --animation gif|mp4: one file of the frames
   impulse2d::render::Overlays overlays;  ///< --no-overlays, --hide, --show
@@ -31,9 +41,10 @@ struct FrameOptions {
 struct RunOptions {
   SceneOptions scene;
   FrameOptions frames;
-  std::optional<std::string> csvPath;  ///< --csv: the trajectory file
-  int every = 1;                       ///< --every: CSV rows and frames every K-th step
-  std::optional<int> traceStep;        ///< --trace-step: one frame per solver event of step N
+  std::optional<std::string> csvPath;       ///< --csv: the trajectory file
+  std::optional<std::string> contactsPath;  ///< --contacts: every contact point's forces, CSV
+  int every = 1;                            ///< --every: CSV rows and frames every K-th step
+  std::optional<int> traceStep;             ///< --trace-step: one frame per solver event of step N
   /// --error-vs-reference: each step's error against the exact answer goes to this CSV.
   std::optional<std::string> errorVsReferencePath;
   std::optional<std::string> plots;  ///< --plots: gnuplot PNGs of the run's figures go here

@@ -1,6 +1,7 @@
 // Plots through gnuplot: a data file, a script, one PNG per figure.
 #include "plots.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -42,13 +43,15 @@ void runGnuplot(const fs::path& script) {
 /// penetration.
 fs::path writeFigureData(const fs::path& path, const std::vector<PlotSeries>& series) {
   std::ofstream data(path);
-  data << "# step time_s kinetic_J potential_J total_J contact_points largest_penetration_m\n";
+  data << "# step time_s kinetic_J potential_J total_J contact_points largest_penetration_m "
+          "applied_force_N friction_force_N\n";
   data.precision(10);
   for (const PlotSeries& run : series) {
     data << "# " << run.label << "\n";
     for (const StepFigures& f : run.figures) {
       data << f.step << ' ' << f.time << ' ' << f.kinetic << ' ' << f.potential << ' '
-           << f.kinetic + f.potential << ' ' << f.contacts << ' ' << f.penetration << '\n';
+           << f.kinetic + f.potential << ' ' << f.contacts << ' ' << f.penetration << ' '
+           << f.appliedForce << ' ' << f.frictionForce << '\n';
     }
     data << "\n\n";
   }
@@ -71,7 +74,71 @@ const Figure kFigures[] = {
     {"penetration", "largest penetration", "largest penetration (m)", 7},
 };
 
+/// Where the viewer plots' axes lie, as fractions of the image (gnuplot's "screen" coordinates):
+/// the page's cursor runs from kPlotLeft to kPlotRight, and from kPlotTop down to kPlotBottom.
+constexpr double kPlotLeft = 0.12;
+constexpr double kPlotRight = 0.96;
+constexpr double kPlotTop = 0.90;
+constexpr double kPlotBottom = 0.12;
+
+/// One viewer plot's script: the SVG terminal, fixed margins, time from 0 to the last step.
+void startViewerPlot(std::ofstream& script, const fs::path& svg, double timeMax,
+                     const std::string& title, const std::string& axis) {
+  script << "set output \"" << gnuplotText(svg.string()) << "\"\nset title \"" << gnuplotText(title)
+         << "\"\nset ylabel \"" << gnuplotText(axis) << "\"\nset xrange [0:" << timeMax
+         << "]\nplot ";
+}
+
 }  // namespace
+
+std::vector<impulse2d::render::ViewerPlot> writeViewerPlots(const fs::path& directory,
+                                                            const std::string& prefix,
+                                                            const std::vector<PlotSeries>& series,
+                                                            bool withForces) {
+  const fs::path data = writeFigureData(directory / (prefix + "_plots.dat"), series);
+  const fs::path scriptPath = directory / (prefix + "_plots.gp");
+  double timeMax = 0.0;
+  for (const PlotSeries& run : series) {
+    if (!run.figures.empty()) timeMax = std::max(timeMax, run.figures.back().time);
+  }
+  if (!(timeMax > 0.0)) timeMax = 1.0;
+  std::ofstream script(scriptPath);
+  script << "set terminal svg noenhanced size 640,300 font \"DejaVu Sans,11\"\nset grid\n"
+         << "set key top left\nset xlabel \"time (s)\"\n"
+         << "set lmargin at screen " << kPlotLeft << "\nset rmargin at screen " << kPlotRight
+         << "\nset tmargin at screen " << kPlotTop << "\nset bmargin at screen " << kPlotBottom
+         << "\n";
+  std::vector<impulse2d::render::ViewerPlot> plots;
+  const auto add = [&](const std::string& file) {
+    plots.push_back({file, 0.0, timeMax, kPlotLeft, kPlotRight});
+  };
+  const std::string dataText = "\"" + gnuplotText(data.string()) + "\"";
+  startViewerPlot(script, directory / (prefix + "_energy.svg"), timeMax, prefix + ": energy",
+                  "energy (J)");
+  if (series.size() == 1) {
+    script << dataText << " using 2:3 with lines lw 2 title \"kinetic\", " << dataText
+           << " using 2:4 with lines lw 2 title \"potential\", " << dataText
+           << " using 2:5 with lines lw 2 title \"total\"\n";
+  } else {
+    for (std::size_t i = 0; i < series.size(); ++i) {
+      script << (i ? ", " : "") << dataText << " index " << i
+             << " using 2:5 with lines lw 2 title \"" << gnuplotText(series[i].label + ": total")
+             << "\"";
+    }
+    script << "\n";
+  }
+  add(prefix + "_energy.svg");
+  if (withForces) {
+    startViewerPlot(script, directory / (prefix + "_forces.svg"), timeMax,
+                    prefix + ": applied force and the friction that answers it", "force (N)");
+    script << dataText << " index 0 using 2:8 with lines lw 2 title \"applied force\", " << dataText
+           << " index 0 using 2:9 with lines lw 2 title \"friction force\"\n";
+    add(prefix + "_forces.svg");
+  }
+  writeOrFail(script, scriptPath);
+  runGnuplot(scriptPath);
+  return plots;
+}
 
 void preparePlotDirectory(const std::string& directory) {
   const fs::path path(directory);

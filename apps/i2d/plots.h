@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "impulse2d/render/viewer.h"
 #include "run_figures.h"
 
 namespace i2d {
@@ -25,6 +26,15 @@ void preparePlotDirectory(const std::string& directory);
 /// DIR/NAME_{kinetic,potential,total,contacts,penetration}.png; returns the summary lines.
 std::vector<std::string> writeRunPlots(const std::string& directory, const std::string& name,
                                        const std::vector<PlotSeries>& series);
+
+/// The viewer page's plots, gnuplot SVGs beside the frames: DIR/PREFIX_energy.svg (kinetic,
+/// potential and total energy; for a comparison each panel's total) and, when `withForces`,
+/// DIR/PREFIX_forces.svg (the applied force against the friction force that answers it). Their
+/// axes span fixed parts of the image, given in each ViewerPlot for the page's cursor.
+std::vector<impulse2d::render::ViewerPlot> writeViewerPlots(const std::filesystem::path& directory,
+                                                            const std::string& prefix,
+                                                            const std::vector<PlotSeries>& series,
+                                                            bool withForces);
 
 /// DIR/NAME_stepNNNNN_velocity_error.png: |Δv wanted| at each velocity event of the step,
 /// against the event's number, marked by iteration; returns the summary line.

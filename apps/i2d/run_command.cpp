@@ -1,5 +1,6 @@
 // `i2d run`: load the scene, apply the command line's overrides, step, record, summarise; or,
 // with --trace-step, draw one frame per solver event of one step.
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -27,6 +28,7 @@ using impulse2d::Simulation;
 /// plots and the viewer), each when asked for.
 struct Recorders {
   std::unique_ptr<CsvWriter> csv;
+  std::unique_ptr<CsvWriter> contacts;
   std::unique_ptr<FrameRecorder> frames;
   std::optional<std::string> plots;
   std::vector<StepFigures> figures;
@@ -36,8 +38,13 @@ struct Recorders {
 
   void record(const Simulation& simulation, long lastStep) {
     const long step = simulation.stepCount();
-    if (csv && isRecorded(step, lastStep, every)) {
-      csv->writeStep(step, double(step) * simulation.settings().dt, simulation.bodies());
+    const double time = double(step) * simulation.settings().dt;
+    if (csv && isRecorded(step, lastStep, every)) csv->writeStep(step, time, simulation.bodies());
+    if (contacts && isRecorded(step, lastStep, every)) {
+      // A world with substeps holds its last substep's impulses, taken over dt / substeps.
+      const double impulseTime =
+          simulation.settings().dt / std::max(1, simulation.settings().substeps);
+      contacts->writeContacts(step, time, impulseTime, simulation.bodies(), simulation.manifolds());
     }
     if (frames || plots) figures.push_back(measureStep(simulation));
     if (frames) frames->record(simulation, lastStep);
@@ -48,6 +55,11 @@ struct Recorders {
     if (csv) csv->commit();
     std::vector<std::string> lines;
     if (frames) lines = frames->finish(dt, figures);
+    if (contacts) {
+      contacts->commit();
+      lines.push_back("contacts     " + contacts->path() + " (" +
+                      std::to_string(contacts->rowCount()) + " rows)");
+    }
     if (plots) {
       for (const std::string& line : writeRunPlots(*plots, scene, {{solver, figures}})) {
         lines.push_back(line);
@@ -98,6 +110,10 @@ Recorders openRecorders(const RunOptions& options, const SceneFile& scene) {
     recorders.frames = std::make_unique<FrameRecorder>(options.frames, scene, options.every);
   }
   if (options.csvPath) recorders.csv = std::make_unique<CsvWriter>(*options.csvPath);
+  if (options.contactsPath) {
+    recorders.contacts =
+        std::make_unique<CsvWriter>(*options.contactsPath, CsvWriter::kContactsHeader);
+  }
   return recorders;
 }
 
@@ -123,11 +139,11 @@ int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& 
   if (options.plots) preparePlotDirectory(*options.plots);
   const long step = *options.traceStep;
   impulse2d::render::RenderSettings settings = renderSettings(options.frames);
-  settings.headsUpLines = 3;
-  const impulse2d::render::FrameRenderer renderer(sceneCamera(scene, settings), scene.name,
-                                                  settings);
-  const impulse2d::render::FrameWriter trace =
-      impulse2d::render::traceStep(simulation, step, renderer, *options.frames.directory);
+  settings.headsUpLines = settings.traceHeadsUpLines;
+  const impulse2d::render::FrameRenderer renderer(sceneCamera(scene, options.frames, settings),
+                                                  scene.name, settings);
+  const impulse2d::render::FrameWriter trace = impulse2d::render::traceStep(
+      simulation, step, renderer, *options.frames.directory, options.frames.format);
   if (trace.frameCount() == 0) {
     throw RunFailure("step " + std::to_string(step) +
                      " resolved no contacts, so it has no solver events to draw; trace a step "

@@ -18,10 +18,18 @@ struct StepFigures {
   double potential = 0.0;    ///< J
   int contacts = 0;          ///< contact points
   double penetration = 0.0;  ///< m, the largest
+  /// N: the applied loads on the dynamic bodies (the sum of their magnitudes) in the last step,
+  /// and the friction force their contacts answered with (the sum over those contacts of
+  /// |Σ λt| / dt): the textbook picture of static friction giving way.
+  double appliedForce = 0.0;
+  double frictionForce = 0.0;
 };
 
 /// The figures of the simulation as it stands.
 StepFigures measureStep(const impulse2d::Simulation& simulation);
+
+/// Whether any body of the simulation carries an applied load.
+bool hasLoads(const impulse2d::Simulation& simulation);
 
 /// The rows of the viewer's table for the steps of the frames written (figures by step).
 impulse2d::render::FigureTable figureTable(const std::vector<StepFigures>& figures,

@@ -19,6 +19,7 @@ namespace impulse2d {
 /// what(): "body NAME became non-finite at step N (solver S)".
 class NonFiniteState : public std::runtime_error {
  public:
+  /// The error naming the body, the step and the solver.
   NonFiniteState(const std::string& body, long step, const std::string& solver);
 };
 

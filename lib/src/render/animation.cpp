@@ -75,7 +75,7 @@ void writeScreen(GifFile& gif, int width, int height, const std::vector<Color>& 
 }
 
 /// A frame's pixels as palette indices; colours seen before are looked up, not searched again.
-void writeFrame(GifFile& gif, const Canvas& frame, int delay, const std::vector<Color>& palette,
+void writeFrame(GifFile& gif, const Image& frame, int delay, const std::vector<Color>& palette,
                 std::map<std::uint32_t, GifPixelType>& known) {
   GraphicsControlBlock control{DISPOSAL_UNSPECIFIED, false, delay, NO_TRANSPARENT_COLOR};
   GifByteType extension[4];
@@ -136,7 +136,7 @@ std::filesystem::path writeGif(const FrameWriter& writer, double framesPerSecond
   std::map<std::uint32_t, GifPixelType> known;
   GifFile gif(path);
   for (int index = 0; index < writer.frameCount(); ++index) {
-    const Canvas frame = readPng(writer.framePath(index));
+    const Image frame = rasterise(writer.frames()[std::size_t(index)].picture);
     if (index == 0) writeScreen(gif, frame.width(), frame.height(), palette);
     writeFrame(gif, frame, delay, palette, known);
   }

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 namespace impulse2d::render {
 
@@ -18,20 +17,34 @@ std::vector<int> evenlySpaced(int frameCount, int count) {
   return indices;
 }
 
-SheetLayout contactSheetLayout(int frameCount, int frameWidth, int frameHeight,
+std::vector<int> chooseFrames(const std::vector<bool>& preferred, int count) {
+  std::vector<int> first;
+  std::vector<int> others;
+  for (int i = 0; i < int(preferred.size()); ++i) (preferred[i] ? first : others).push_back(i);
+  std::vector<int> chosen;
+  for (const int k : evenlySpaced(int(first.size()), count)) chosen.push_back(first[k]);
+  for (const int k : evenlySpaced(int(others.size()), count - int(chosen.size()))) {
+    chosen.push_back(others[k]);
+  }
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
+}
+
+SheetLayout contactSheetLayout(const std::vector<int>& shown, int sceneWidth, int sceneHeight,
                                const RenderSettings& settings) {
   SheetLayout layout;
-  layout.frames = evenlySpaced(frameCount, settings.sheetThumbnails);
-  const int shown = int(layout.frames.size());
+  layout.frames = shown;
+  const int count = int(shown.size());
   layout.thumbnailWidth = std::max(settings.sheetThumbnailWidth,
-                                   int(std::lround(settings.sheetThumbnailScale * frameWidth)));
+                                   int(std::lround(settings.sheetThumbnailScale * sceneWidth)));
   const int fitting = int(std::lround(double(settings.sheetColumns) * settings.sheetThumbnailWidth /
                                       layout.thumbnailWidth));
-  layout.columns = std::max(1, std::min(fitting, shown));
-  layout.rows = (shown + layout.columns - 1) / layout.columns;
+  layout.columns = std::max(1, std::min(fitting, count));
+  layout.rows = (count + layout.columns - 1) / layout.columns;
   layout.thumbnailHeight =
-      std::max(1, int(std::lround(double(layout.thumbnailWidth) * frameHeight / frameWidth)));
-  layout.labelHeight = int(std::ceil(textHeight(settings.textScale) + 2.0 * settings.textMargin));
+      std::max(1, int(std::lround(double(layout.thumbnailWidth) * sceneHeight / sceneWidth)));
+  const double size = settings.minimumTextSize;
+  layout.labelHeight = int(std::ceil(lineHeight(size) + 2.0 * settings.textMargin * size));
   layout.spacing = settings.spacing;
   layout.width = layout.columns * (layout.thumbnailWidth + layout.spacing) + layout.spacing;
   layout.height =
@@ -39,19 +52,24 @@ SheetLayout contactSheetLayout(int frameCount, int frameWidth, int frameHeight,
   return layout;
 }
 
-Canvas drawContactSheet(const SheetLayout& layout, const std::vector<Canvas>& thumbnails,
-                        const std::vector<long>& steps, const RenderSettings& settings) {
-  Canvas sheet(layout.width, layout.height, settings.colours.sheetBackground);
-  for (std::size_t k = 0; k < thumbnails.size() && k < steps.size(); ++k) {
-    const int x = layout.thumbnailX(int(k));
-    const int y = layout.thumbnailY(int(k));
-    blit(sheet, resized(thumbnails[k], layout.thumbnailWidth, layout.thumbnailHeight), x, y);
-    const Vec2 labelCorner(x, y + layout.thumbnailHeight);
-    fillRectangle(sheet, labelCorner, Vec2(layout.thumbnailWidth, layout.labelHeight),
-                  settings.colours.sheetLabel);
-    drawText(sheet, "step " + std::to_string(steps[k]),
-             labelCorner + Vec2(settings.textMargin, settings.textMargin), settings.textScale,
-             settings.colours.text);
+Picture drawContactSheet(const SheetLayout& layout, const std::vector<Frame>& frames,
+                         const RenderSettings& settings) {
+  Picture sheet(layout.width, layout.height);
+  Drawing drawing(sheet);
+  drawing.rectangle(Vec2::Zero(), Vec2(layout.width, layout.height),
+                    settings.colours.sheetBackground);
+  const double size = settings.minimumTextSize;
+  for (std::size_t k = 0; k < layout.frames.size(); ++k) {
+    const Frame& frame = frames[std::size_t(layout.frames[k])];
+    const Vec2 corner(layout.thumbnailX(int(k)), layout.thumbnailY(int(k)));
+    drawing.placePart(frame.picture, frame.sceneCorner, frame.sceneSize, corner,
+                      layout.thumbnailWidth / frame.sceneSize.x());
+    const Vec2 label = corner + Vec2(0.0, layout.thumbnailHeight);
+    drawing.rectangle(label, Vec2(layout.thumbnailWidth, layout.labelHeight),
+                      settings.colours.sheetLabel);
+    drawing.text(frame.caption,
+                 label + Vec2(settings.textMargin * size, settings.textMargin * size), size,
+                 settings.colours.text);
   }
   return sheet;
 }

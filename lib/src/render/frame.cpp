@@ -1,4 +1,4 @@
-// One frame of a simulation: bodies by state, contact overlays, the heads-up line.
+// One frame of a simulation: bodies by state, what acts on them, the heads-up and legend strips.
 #include "impulse2d/render/frame.h"
 
 #include <algorithm>
@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "impulse2d/collide.h"
 #include "impulse2d/render/legend.h"
 
 namespace impulse2d::render {
@@ -48,88 +49,214 @@ double rotationMarkReach(const Shape& shape) {
   return std::isfinite(reach) ? reach : 0.0;
 }
 
-void drawBody(Canvas& canvas, const Camera& camera, const Body& body, Color fill,
+/// Arrow sizes of a frame: proportional to its text size.
+struct ArrowSize {
+  double width;
+  double headLength;
+  double headWidth;
+};
+
+ArrowSize arrowSize(const Camera& camera, const RenderSettings& settings) {
+  return {settings.arrowWidth * camera.textSize, settings.arrowHeadLength * camera.textSize,
+          settings.arrowHeadWidth * camera.textSize};
+}
+
+void drawBody(Drawing& drawing, const Camera& camera, const Body& body, Color fill,
               const RenderSettings& settings) {
   const Color outline = settings.colours.outline;
   const Vec2 centre = camera.toPixels(body.position);
+  drawing.setRole("body");
   if (body.shape.type == ShapeType::Circle) {
-    fillCircle(canvas, centre, camera.scale * body.shape.radius, fill, outline,
-               settings.outlineWidth);
+    drawing.circle(centre, camera.scale * body.shape.radius, fill, outline, settings.outlineWidth);
   } else {
     std::vector<Vec2> corners;
     corners.reserve(body.shape.vertices.size());
     for (const Vec2& vertex : body.shape.vertices) {
       corners.push_back(camera.toPixels(body.toWorld(vertex)));
     }
-    fillConvexPolygon(canvas, corners, fill, outline, settings.outlineWidth);
+    drawing.polygon(corners, fill, outline, settings.outlineWidth);
   }
   if (settings.overlays.rotationMarks && !body.isStatic()) {
-    const Vec2 edge = camera.toPixels(body.toWorld(Vec2(rotationMarkReach(body.shape), 0.0)));
-    drawLine(canvas, centre, edge, settings.rotationMarkWidth, settings.colours.rotationMark);
+    drawing.setRole("rotation mark");
+    // To the edge, but no longer than rotationMarkLength: on a long plank a mark to its end
+    // would read as a crack.
+    const double longest = settings.rotationMarkLength * camera.textSize / camera.scale;  // m
+    const double reach = std::min(rotationMarkReach(body.shape), longest);
+    const Vec2 edge = camera.toPixels(body.toWorld(Vec2(reach, 0.0)));
+    drawing.line(centre, edge, settings.rotationMarkWidth, settings.colours.rotationMark);
   }
 }
 
-/// The gauge under a contact point: a bar filled to |λt| / (μ λn), in the static-friction
-/// colour below the limit and the dynamic one on it.
-void drawFrictionGauge(Canvas& canvas, const Vec2& at, double use, double textScale,
+/// The gauge under a contact: a bar filled to |Σλt| / (μ Σλn), in the static-friction colour
+/// below the limit and the dynamic one on it.
+void drawFrictionGauge(Drawing& drawing, const Vec2& at, double use, double length, double textSize,
                        const RenderSettings& settings) {
   const Palette& colours = settings.colours;
-  const Vec2 size(settings.gaugeLength * textScale, settings.gaugeThickness * textScale);
+  const Vec2 size(length, settings.gaugeThickness * textSize);
   const Vec2 corner = at + Vec2(-0.5 * size.x(), settings.contactPointRadius + 2.0);
   const bool onLimit = use >= 1.0 - settings.gaugeLimitTolerance;
-  const std::vector<Vec2> box{corner, corner + Vec2(size.x(), 0.0), corner + size,
-                              corner + Vec2(0.0, size.y())};
-  fillConvexPolygon(canvas, box, colours.gaugeBackground, colours.outline, settings.outlineWidth);
+  drawing.setRole("friction gauge");
+  // The frame as a dark rectangle under the empty bar: two fills, cheaper than a stroke.
+  const Vec2 rim = Vec2::Constant(settings.outlineWidth);
+  drawing.rectangle(corner - rim, size + 2.0 * rim, colours.outline);
+  drawing.rectangle(corner, size, colours.gaugeBackground);
   const double filled = std::min(use, 1.0) * size.x();
   if (filled > 0.0) {
-    fillRectangle(canvas, corner, Vec2(filled, size.y()),
-                  onLimit ? colours.dynamicFriction : colours.staticFriction);
+    drawing.rectangle(corner, Vec2(filled, size.y()),
+                      onLimit ? colours.dynamicFriction : colours.staticFriction);
   }
 }
 
-void drawContactPoint(Canvas& canvas, const Camera& camera, const Manifold& manifold,
-                      const ContactPoint& point, const ForceScale& forces,
+/// The middle of a manifold's points (world).
+Vec2 middleOf(const Manifold& manifold) {
+  Vec2 middle = Vec2::Zero();
+  for (int i = 0; i < manifold.pointCount; ++i) middle += manifold.points[i].point;
+  return manifold.pointCount > 0 ? Vec2(middle / manifold.pointCount) : middle;
+}
+
+/// Pixels: where a point's force arrows start, relative to the point. A manifold's points lie
+/// along its tangent; each arrow moves outward from their middle, so on a stack the normal
+/// arrows stand beside the box's sides instead of on them.
+Vec2 arrowShift(const Camera& camera, const Manifold& manifold, const ContactPoint& point,
+                const RenderSettings& settings) {
+  if (manifold.pointCount < 2) return Vec2::Zero();
+  const Vec2 tangent = manifold.tangent();
+  const double side = (point.point - middleOf(manifold)).dot(tangent) >= 0.0 ? 1.0 : -1.0;
+  const Vec2 direction = camera.toPixelVector(side * tangent).normalized();
+  return settings.contactArrowOffset * camera.textSize * direction;
+}
+
+/// The friction force arrow with its limit μN marked across its line: the student sees how
+/// much of the cone is used.
+void drawFriction(Drawing& drawing, const Camera& camera, const Manifold& manifold,
+                  const ContactPoint& point, const ForceScale& forces, const Vec2& shift,
+                  const RenderSettings& settings, DrawnKinds& drawn) {
+  const Palette& colours = settings.colours;
+  const double perImpulse = forces.metresPerNewton / forces.dt;  // m per N s
+  const bool dynamic = point.friction == FrictionState::Dynamic;
+  drawing.setRole(dynamic ? "dynamic friction" : "static friction");
+  const double length = drawWorldArrow(
+      drawing, camera, point.point, perImpulse * point.tangentImpulse * manifold.tangent(),
+      dynamic ? colours.dynamicFriction : colours.staticFriction, settings, shift, false);
+  if (length <= 0.0) return;
+  (dynamic ? drawn.dynamicFriction : drawn.staticFriction) = true;
+  const double limit = camera.scale * perImpulse * manifold.friction * point.normalImpulse;
+  if (!(limit > 0.0) || limit > settings.maxArrowLength * camera.height) return;
+  const double sign = point.tangentImpulse >= 0.0 ? 1.0 : -1.0;
+  const Vec2 along = camera.toPixelVector(sign * manifold.tangent()).normalized();
+  const Vec2 across(-along.y(), along.x());
+  const Vec2 start = camera.toPixels(point.point) + shift;
+  const Vec2 mark = start + limit * along;
+  const double half = 0.5 * settings.limitMarkLength * camera.textSize;
+  const double width = 0.5 * arrowSize(camera, settings).width;
+  // A faint track from the point to the mark: the room friction has before the point slides.
+  drawing.setRole("friction room");
+  drawing.line(start, mark, width, withOpacity(colours.frictionLimit, 0.35));
+  drawing.setRole("friction limit");
+  drawing.line(mark - half * across, mark + half * across, width, colours.frictionLimit);
+  drawn.frictionLimits = true;
+}
+
+/// Where the surfaces slip past each other at a point: B's velocity relative to A's there,
+/// along the tangent.
+Vec2 slipVelocity(const std::vector<Body>& bodies, const Manifold& manifold, const Vec2& point) {
+  const Vec2 relative =
+      bodies[manifold.bodyB].velocityAt(point) - bodies[manifold.bodyA].velocityAt(point);
+  return relative.dot(manifold.tangent()) * manifold.tangent();
+}
+
+void drawContactPoint(Drawing& drawing, const Camera& camera, const std::vector<Body>& bodies,
+                      const Manifold& manifold, const ContactPoint& point, const ForceScale& forces,
                       const RenderSettings& settings, DrawnKinds& drawn) {
   const Overlays& show = settings.overlays;
   const Palette& colours = settings.colours;
   const Vec2 at = camera.toPixels(point.point);
+  const Vec2 shift = arrowShift(camera, manifold, point, settings);
   const double perImpulse = forces.metresPerNewton / forces.dt;  // m per N s
   if (show.contactNormals) {
+    drawing.setRole("contact normal");
     const Vec2 direction(manifold.normal.x(), -manifold.normal.y());
-    drawLine(canvas, at, at + settings.contactNormalLength * direction, settings.contactNormalWidth,
-             colours.contactNormal);
+    drawing.line(at, at + settings.contactNormalLength * direction, settings.contactNormalWidth,
+                 colours.contactNormal);
   }
   if (show.normalImpulses) {
-    drawn.normalForces |= drawWorldArrow(canvas, camera, point.point,
+    drawing.setRole("normal force");
+    drawn.normalForces |= drawWorldArrow(drawing, camera, point.point,
                                          perImpulse * point.normalImpulse * manifold.normal,
-                                         colours.normalImpulse, settings);
+                                         colours.normalForce, settings, shift, false) > 0.0;
   }
   if (show.frictionImpulses) {
-    const bool dynamic = point.friction == FrictionState::Dynamic;
-    const bool shown = drawWorldArrow(
-        canvas, camera, point.point, perImpulse * point.tangentImpulse * manifold.tangent(),
-        dynamic ? colours.dynamicFriction : colours.staticFriction, settings);
-    (dynamic ? drawn.dynamicFriction : drawn.staticFriction) |= shown;
+    drawFriction(drawing, camera, manifold, point, forces, shift, settings, drawn);
+  }
+  const Vec2 slip = slipVelocity(bodies, manifold, point.point);
+  if (show.slidingVelocities && slip.norm() > settings.slidingSpeed) {
+    drawing.setRole("sliding velocity");
+    const Vec2 below = -camera.textSize * 0.5 * camera.toPixelVector(manifold.normal).normalized();
+    drawn.slidingVelocities |=
+        drawWorldArrow(drawing, camera, point.point, settings.velocityScale * slip,
+                       colours.velocity, settings, below) > 0.0;
   }
   if (show.contactPoints) {
-    fillCircle(canvas, at, settings.contactPointRadius, colours.contactPoint, colours.outline,
-               settings.outlineWidth);
+    drawing.setRole("contact point");
+    drawing.circle(at, settings.contactPointRadius, colours.contactPoint, colours.outline,
+                   settings.outlineWidth);
   }
 }
 
 /// One gauge per contact, under the middle of its points.
-void drawContactGauge(Canvas& canvas, const Camera& camera, const Manifold& manifold,
+void drawContactGauge(Drawing& drawing, const Camera& camera, const Manifold& manifold,
                       const ForceScale& forces, const RenderSettings& settings, DrawnKinds& drawn) {
   double normal = 0.0;
-  Vec2 middle = Vec2::Zero();
-  for (int i = 0; i < manifold.pointCount; ++i) {
-    normal += manifold.points[i].normalImpulse;
-    middle += manifold.points[i].point / manifold.pointCount;
-  }
+  for (int i = 0; i < manifold.pointCount; ++i) normal += manifold.points[i].normalImpulse;
   if (manifold.friction <= 0.0 || normal / forces.dt <= settings.gaugeMinimumNormalForce) return;
-  drawFrictionGauge(canvas, camera.toPixels(middle), frictionUse(manifold),
-                    frameTextScale(settings, canvas.width()), settings);
+  // No longer than the contact is wide, so the gauges of a row of small boxes stay apart.
+  double length = settings.gaugeLength * camera.textSize;
+  if (manifold.pointCount == 2) {
+    const double span =
+        (camera.toPixels(manifold.points[0].point) - camera.toPixels(manifold.points[1].point))
+            .norm();
+    length = std::min(length, 0.8 * span);
+  }
+  drawFrictionGauge(drawing, camera.toPixels(middleOf(manifold)), frictionUse(manifold), length,
+                    camera.textSize, settings);
   drawn.gauges = true;
+}
+
+/// "3.20 N": a force's value, with three significant figures.
+std::string newtons(double force) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g N", force);
+  return text;
+}
+
+/// Each applied load as an arrow whose tip is at its point (it pushes there), labelled F = value;
+/// each weight, when asked for, from the centre of mass.
+void drawLoads(Drawing& drawing, const Camera& camera, const std::vector<Body>& bodies,
+               const ForceScale& forces, const SceneState& state, const RenderSettings& settings,
+               DrawnKinds& drawn) {
+  const Palette& colours = settings.colours;
+  for (const Body& body : bodies) {
+    if (body.isStatic()) continue;
+    if (settings.overlays.weights) {
+      drawing.setRole("weight");
+      drawn.weights |= drawWorldArrow(drawing, camera, body.position,
+                                      forces.metresPerNewton * body.mass * state.gravity,
+                                      colours.load, settings) > 0.0;
+    }
+    const Vec2 force = body.load.forceAt(state.time);
+    if (!settings.overlays.loads || force == Vec2::Zero()) continue;
+    const Vec2 point = body.toWorld(body.load.point);
+    const Vec2 vector = forces.metresPerNewton * force;
+    drawing.setRole("load");
+    const double length =
+        drawWorldArrow(drawing, camera, point - vector, vector, colours.load, settings);
+    if (length <= 0.0) continue;
+    drawn.loads = true;
+    const Vec2 tail = camera.toPixels(point) - length * camera.toPixelVector(force).normalized();
+    drawing.text("F = " + newtons(force.norm()),
+                 tail + Vec2(-0.5 * camera.textSize, -1.3 * camera.textSize), camera.textSize,
+                 colours.text);
+  }
 }
 
 /// The weight (N) of the dynamic bodies standing on `base`: those whose centre is above its
@@ -262,82 +389,129 @@ FrameInfo describe(const Simulation& simulation, const std::string& scene) {
   return info;
 }
 
+Palette printPalette() {
+  Palette palette;
+  palette.background = Color{255, 255, 255, 255};
+  palette.staticBody = Color{200, 200, 200, 255};
+  palette.outline = Color{0, 0, 0, 255};
+  palette.rotationMark = Color{0, 0, 0, 255};
+  palette.contactNormal = Color{0, 0, 0, 255};
+  palette.text = Color{0, 0, 0, 255};
+  palette.stripBackground = Color{255, 255, 255, 255};
+  palette.sheetBackground = Color{255, 255, 255, 255};
+  palette.sheetLabel = Color{255, 255, 255, 255};
+  return palette;
+}
+
 std::vector<std::string> headsUpLines(const FrameInfo& info) {
   char numbers[128];
-  std::snprintf(numbers, sizeof numbers, "step %ld  t = %.3f s  E = %.2f J", info.step, info.time,
-                info.energy);
-  return {info.scene + "  " + info.solver, numbers};
+  std::snprintf(numbers, sizeof numbers, "step %ld    t = %.3f s    E = %.2f J", info.step,
+                info.time, info.energy);
+  return {info.scene + "  ·  " + info.solver, numbers};
 }
 
-double frameTextScale(const RenderSettings& settings, int frameWidth) {
-  return std::max(settings.textScale, settings.frameTextPerPixel * frameWidth);
+std::string caption(const FrameInfo& info) {
+  char text[96];
+  std::snprintf(text, sizeof text, "step %ld   t = %.2f s", info.step, info.time);
+  return text;
 }
 
-double headsUpHeight(const RenderSettings& settings, int frameWidth) {
-  return textHeight(frameTextScale(settings, frameWidth)) + 2.0 * settings.textMargin;
+std::vector<Manifold> startingContacts(const std::vector<Body>& bodies, double margin) {
+  std::vector<Manifold> manifolds;
+  for (std::size_t a = 0; a < bodies.size(); ++a) {
+    for (std::size_t b = a + 1; b < bodies.size(); ++b) {
+      if (bodies[a].isStatic() && bodies[b].isStatic()) continue;
+      const Aabb grown{bodies[a].bounds.lower - Vec2::Constant(margin),
+                       bodies[a].bounds.upper + Vec2::Constant(margin)};
+      if (!grown.overlaps(bodies[b].bounds)) continue;
+      Manifold manifold;
+      manifold.bodyA = int(a);
+      manifold.bodyB = int(b);
+      if (collide(bodies[a], bodies[b], margin, manifold) > 0) manifolds.push_back(manifold);
+    }
+  }
+  return manifolds;
 }
 
-bool drawWorldArrow(Canvas& canvas, const Camera& camera, const Vec2& at, const Vec2& vector,
-                    Color color, const RenderSettings& settings) {
+double drawWorldArrow(Drawing& drawing, const Camera& camera, const Vec2& at, const Vec2& vector,
+                      Color color, const RenderSettings& settings, const Vec2& shift, bool halo) {
   Vec2 pixels = camera.toPixelVector(vector);
   const double length = pixels.norm();
-  if (!(length >= settings.minArrowLength)) return false;
-  if (length > settings.maxArrowLength) pixels *= settings.maxArrowLength / length;
-  // Arrows thicken with the frame's text, so they stay visible on a thumbnail.
-  const double thickness = frameTextScale(settings, canvas.width()) / settings.textScale;
-  const Vec2 from = camera.toPixels(at);
-  drawArrow(canvas, from, from + pixels, thickness * settings.arrowWidth,
-            thickness * settings.arrowHeadLength, thickness * settings.arrowHeadWidth, color);
-  return true;
+  if (!(length >= settings.minArrowLength)) return 0.0;
+  const double longest = settings.maxArrowLength * camera.height;
+  if (length > longest) pixels *= longest / length;
+  const ArrowSize size = arrowSize(camera, settings);
+  const Vec2 from = camera.toPixels(at) + shift;
+  drawing.arrow(from, from + pixels, size.width, size.headLength, size.headWidth, color,
+                halo ? settings.colours.arrowHalo : Color{0, 0, 0, 0});
+  return std::min(length, longest);
 }
 
-DrawnKinds drawScene(Canvas& canvas, const Camera& camera, const std::vector<Body>& bodies,
+DrawnKinds drawScene(Drawing& drawing, const Camera& camera, const std::vector<Body>& bodies,
                      const std::vector<Manifold>& manifolds, const ForceScale& forces,
-                     const RenderSettings& settings) {
+                     const SceneState& state, const RenderSettings& settings) {
   DrawnKinds drawn;
   const std::vector<BodyState> states = classifyBodies(bodies, manifolds, settings);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    drawBody(canvas, camera, bodies[i], colourOf(states[i], settings.colours), settings);
+    drawBody(drawing, camera, bodies[i], colourOf(states[i], settings.colours), settings);
     drawn.states[std::size_t(states[i])] = true;
   }
+  // Layers, each painted before the next: bodies, contact arrows and points, gauges, loads.
+  drawing.flush();
   for (const Manifold& manifold : manifolds) {
+    if (!validManifold(manifold, bodies.size())) continue;
     for (int i = 0; i < manifold.pointCount; ++i) {
-      drawContactPoint(canvas, camera, manifold, manifold.points[i], forces, settings, drawn);
-    }
-    if (settings.overlays.frictionGauges) {
-      drawContactGauge(canvas, camera, manifold, forces, settings, drawn);
+      drawContactPoint(drawing, camera, bodies, manifold, manifold.points[i], forces, settings,
+                       drawn);
     }
   }
+  drawing.flush();
+  for (const Manifold& manifold : manifolds) {
+    if (settings.overlays.frictionGauges && validManifold(manifold, bodies.size())) {
+      drawContactGauge(drawing, camera, manifold, forces, settings, drawn);
+    }
+  }
+  drawing.flush();
+  drawLoads(drawing, camera, bodies, forces, state, settings, drawn);
   if (!settings.overlays.velocities) return drawn;
+  drawing.setRole("velocity");
   for (const Body& body : bodies) {
     if (body.isStatic()) continue;
     drawn.velocities |=
-        drawWorldArrow(canvas, camera, body.position, settings.velocityScale * body.velocity,
-                       settings.colours.velocity, settings);
+        drawWorldArrow(drawing, camera, body.position, settings.velocityScale * body.velocity,
+                       settings.colours.velocity, settings) > 0.0;
   }
   return drawn;
 }
 
-void drawHeadsUp(Canvas& canvas, const std::vector<std::string>& lines,
-                 const RenderSettings& settings) {
-  const double lineHeight = headsUpHeight(settings, canvas.width());
-  const double textScale = frameTextScale(settings, canvas.width());
-  const double room = canvas.width() - 2.0 * settings.textMargin;
+namespace {
+
+/// The heads-up strip: its lines on the strip's background, each made smaller only if it would
+/// not fit the width.
+void drawHeadsUp(Drawing& drawing, const std::vector<std::string>& lines, int width, double height,
+                 double size, const RenderSettings& settings) {
+  drawing.setRole("heads-up");
+  drawing.rectangle(Vec2::Zero(), Vec2(width, height), settings.colours.stripBackground);
+  const double margin = settings.textMargin * size;
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    const double top = double(i) * lineHeight;
-    fillRectangle(canvas, Vec2(0.0, top), Vec2(canvas.width(), lineHeight),
-                  settings.colours.labelBackground);
-    // A line too long for the image is drawn smaller rather than cut off.
-    const double width = textWidth(lines[i], textScale);
-    const double scale = width > room ? textScale * room / width : textScale;
-    drawText(canvas, lines[i], Vec2(settings.textMargin, top + settings.textMargin), scale,
-             settings.colours.text);
+    const double room = width - 2.0 * margin;
+    const double natural = drawing.textWidth(lines[i], size);
+    const double fitted =
+        natural > room ? std::max(settings.minimumTextSize, size * room / natural) : size;
+    drawing.text(lines[i], Vec2(margin, margin + double(i) * lineHeight(size)), fitted,
+                 settings.colours.text);
   }
 }
+
+}  // namespace
 
 FrameRenderer::FrameRenderer(const Camera& camera, std::string scene,
                              const RenderSettings& settings)
     : camera_(camera), scene_(std::move(scene)), settings_(settings) {}
+
+int FrameRenderer::frameHeight() const {
+  return camera_.headsUpHeight + camera_.height + camera_.legendHeight;
+}
 
 // A world with substeps reports the last substep's impulses, taken over dt / substeps.
 void FrameRenderer::fitForces(const Simulation& simulation) {
@@ -346,23 +520,48 @@ void FrameRenderer::fitForces(const Simulation& simulation) {
                           world.dt / std::max(1, world.substeps), camera_, settings_);
 }
 
-const Canvas& FrameRenderer::draw(const Simulation& simulation) {
+Frame FrameRenderer::draw(const Simulation& simulation) {
   if (forces_.metresPerNewton <= 0.0) fitForces(simulation);
-  return draw(simulation.bodies(), simulation.manifolds(),
-              headsUpLines(describe(simulation, scene_)));
+  const FrameInfo info = describe(simulation, scene_);
+  // The loads as they acted in the last (sub)step, beside the contact forces they caused.
+  const SceneState state{std::max(0.0, info.time - forces_.dt), simulation.settings().gravity};
+  if (simulation.stepCount() == 0 && simulation.manifolds().empty()) {
+    return draw(simulation.bodies(),
+                startingContacts(simulation.bodies(), settings_.startingContactMargin), state,
+                headsUpLines(info), caption(info));
+  }
+  return draw(simulation.bodies(), simulation.manifolds(), state, headsUpLines(info),
+              caption(info));
 }
 
-const Canvas& FrameRenderer::draw(const std::vector<Body>& bodies,
-                                  const std::vector<Manifold>& manifolds,
-                                  const std::vector<std::string>& headsUp) {
+Frame FrameRenderer::draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
+                          const SceneState& state, const std::vector<std::string>& headsUp,
+                          const std::string& caption, const SceneExtra& extra) {
   if (forces_.metresPerNewton <= 0.0)
     forces_ = fitForceScale(bodies, Vec2::Zero(), forces_.dt, camera_, settings_);
-  const int legend = settings_.overlays.legend ? legendHeight(settings_, camera_.width) : 0;
-  canvas_.reset(camera_.width, camera_.height + legend, settings_.colours.background);
-  const DrawnKinds drawn = drawScene(canvas_, camera_, bodies, manifolds, forces_, settings_);
-  if (settings_.overlays.headsUp) drawHeadsUp(canvas_, headsUp, settings_);
-  if (legend > 0) drawLegend(canvas_, camera_.height, drawn, forces_, camera_, settings_);
-  return canvas_;
+  const int height = frameHeight();
+  const double top = camera_.headsUpHeight;
+  const Frame frame{Picture(camera_.width, height), Vec2(0.0, top),
+                    Vec2(camera_.width, camera_.height), caption};
+  // One recording, the scene moved down under the heads-up strip: the strips are drawn after
+  // it and cover whatever of it reaches past the scene area.
+  Drawing whole(frame.picture, log_);
+  whole.translate(Vec2(0.0, top));
+  whole.rectangle(Vec2::Zero(), Vec2(camera_.width, camera_.height), settings_.colours.background);
+  DrawnKinds drawn = drawScene(whole, camera_, bodies, manifolds, forces_, state, settings_);
+  if (extra) {
+    whole.flush();
+    extra(whole, drawn);
+  }
+  whole.translate(Vec2(0.0, -top));
+  if (settings_.overlays.headsUp) {
+    drawHeadsUp(whole, headsUp, camera_.width, top, camera_.textSize, settings_);
+  }
+  if (settings_.overlays.legend) {
+    drawLegend(whole, top + camera_.height, camera_.width, height, drawn, forces_, camera_,
+               settings_);
+  }
+  return frame;
 }
 
 }  // namespace impulse2d::render

@@ -18,12 +18,12 @@ bool endsWith(const std::string& text, const std::string& ending) {
          text.compare(text.size() - ending.size(), ending.size(), ending) == 0;
 }
 
-/// PREFIX_ddddd.png, or the .tmp of one that was being written.
+/// PREFIX_ddddd.png (.svg, .pdf), or the .tmp of one that was being written.
 bool isNumberedFrame(const std::string& name, const std::string& prefix) {
   const std::string head = prefix + "_";
   if (name.compare(0, head.size(), head) != 0) return false;
   std::string number = name.substr(head.size());
-  for (const std::string ending : {".png", ".png.tmp"}) {
+  for (const std::string ending : {".png", ".png.tmp", ".svg", ".svg.tmp", ".pdf", ".pdf.tmp"}) {
     if (endsWith(number, ending)) {
       number.resize(number.size() - ending.size());
       return number.size() >= 5 && std::all_of(number.begin(), number.end(), [](char c) {
@@ -47,11 +47,13 @@ std::string comparePrefix(const std::string& scene) {
 }
 
 FrameWriter::FrameWriter(const std::filesystem::path& root, const std::string& scene, int every,
-                         const std::string& prefix, const RenderSettings& settings)
+                         const std::string& prefix, const RenderSettings& settings,
+                         ImageFormat format)
     : directory_(root / scene),
       prefix_(prefix.empty() ? scene : prefix),
       every_(every),
-      settings_(settings) {
+      settings_(settings),
+      format_(format) {
   if (every < 1) throw std::invalid_argument("frames every K steps needs K >= 1");
   prepareDirectory(root);
   removeEarlierFrames();
@@ -86,10 +88,12 @@ void FrameWriter::removeEarlierFrames() const {
   }
 }
 
-std::filesystem::path FrameWriter::write(long step, const Canvas& frame) {
+std::filesystem::path FrameWriter::write(long step, const Frame& frame, bool preferred) {
   const std::filesystem::path path = framePath(frameCount());
-  writePng(path, frame);
+  pictures_.write(path, frame.picture, format_);
   steps_.push_back(step);
+  frames_.push_back(frame);
+  preferred_.push_back(preferred);
   return path;
 }
 
@@ -97,26 +101,21 @@ std::filesystem::path FrameWriter::writeContactSheet() const {
   if (steps_.empty()) {
     throw RenderError("no frames in '" + directory_.string() + "' to make a contact sheet of");
   }
-  std::vector<Canvas> thumbnails;
-  std::vector<long> steps;
-  for (int index : evenlySpaced(frameCount(), settings_.sheetThumbnails)) {
-    thumbnails.push_back(readPng(framePath(index)));
-    steps.push_back(steps_[index]);
-  }
-  const SheetLayout layout =
-      contactSheetLayout(frameCount(), thumbnails[0].width(), thumbnails[0].height(), settings_);
-  writePng(sheetPath(), drawContactSheet(layout, thumbnails, steps, settings_));
+  const Vec2& scene = frames_.front().sceneSize;
+  const SheetLayout layout = contactSheetLayout(chooseFrames(preferred_, settings_.sheetThumbnails),
+                                                int(scene.x()), int(scene.y()), settings_);
+  writePicture(sheetPath(), drawContactSheet(layout, frames_, settings_), format_);
   return sheetPath();
 }
 
 std::filesystem::path FrameWriter::framePath(int index) const {
   char number[32];
-  std::snprintf(number, sizeof number, "_%05d.png", index);
-  return directory_ / (prefix_ + number);
+  std::snprintf(number, sizeof number, "_%05d.", index);
+  return directory_ / (prefix_ + number + extensionOf(format_));
 }
 
 std::filesystem::path FrameWriter::sheetPath() const {
-  return directory_ / (prefix_ + "_sheet.png");
+  return directory_ / (prefix_ + "_sheet." + extensionOf(format_));
 }
 
 }  // namespace impulse2d::render

@@ -1,6 +1,7 @@
-// Frames of one step, one per solver event.
+// Frames of one step, one per solver event, each telling what the event did.
 #include "impulse2d/render/trace.h"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -10,74 +11,147 @@ namespace {
 
 RenderSettings withVelocities(RenderSettings settings) {
   settings.overlays.velocities = true;
+  settings.headsUpLines = settings.traceHeadsUpLines;
   return settings;
 }
 
-bool refersToPoint(const SolverEvent& event, const std::vector<Manifold>& manifolds) {
-  return event.manifold >= 0 && std::size_t(event.manifold) < manifolds.size() &&
-         event.point >= 0 && event.point < manifolds[event.manifold].pointCount;
+bool refersToPoint(const SolverEvent& event, const std::vector<Body>& bodies,
+                   const std::vector<Manifold>& manifolds) {
+  if (event.manifold < 0 || std::size_t(event.manifold) >= manifolds.size()) return false;
+  const Manifold& manifold = manifolds[std::size_t(event.manifold)];
+  return event.point >= 0 && event.point < manifold.pointCount && manifold.bodyA >= 0 &&
+         manifold.bodyB >= 0 && std::size_t(manifold.bodyA) < bodies.size() &&
+         std::size_t(manifold.bodyB) < bodies.size();
+}
+
+/// B's velocity relative to A's at the event's point.
+Vec2 pointVelocity(const std::vector<Body>& bodies, const Manifold& manifold, const Vec2& point) {
+  return bodies[std::size_t(manifold.bodyB)].velocityAt(point) -
+         bodies[std::size_t(manifold.bodyA)].velocityAt(point);
+}
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char text[200];
+  std::snprintf(text, sizeof text, pattern, a, b, c);
+  return text;
+}
+
+/// Friction at the point after the event: static when |λt| stays inside μλn, dynamic on it.
+std::string frictionLine(const Manifold& manifold, const ContactPoint& point) {
+  const double limit = manifold.friction * point.normalImpulse;
+  const double used = std::abs(point.tangentImpulse);
+  if (point.friction == FrictionState::Dynamic) {
+    return format("dynamic friction: |λ_t| = %.4f N s = μλ_n (μ = %.2f): on the cone, sliding",
+                  used, manifold.friction);
+  }
+  return format("static friction: |λ_t| = %.4f N s < μλ_n = %.4f N s (μ = %.2f): it holds", used,
+                limit, manifold.friction);
 }
 
 }  // namespace
 
-std::string describe(const SolverEvent& event) {
-  char text[160];
-  if (event.phase == SolverEvent::Phase::Velocity) {
-    std::snprintf(text, sizeof text,
-                  "velocity %d: contact %d.%d  dv = %.3f m/s  J = (%.3f, %.3f) N s",
-                  event.iteration, event.manifold, event.point, event.desiredChange,
-                  event.normalImpulse, event.tangentImpulse);
-  } else {
-    std::snprintf(text, sizeof text, "position %d: contact %d.%d  removed %.5f m of penetration",
-                  event.iteration, event.manifold, event.point, event.desiredChange);
+EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
+                     const std::vector<Body>& after, const std::vector<Manifold>& manifolds,
+                     const std::string& solver, double dt) {
+  EventStory story;
+  char label[96];
+  const bool velocity = event.phase == SolverEvent::Phase::Velocity;
+  std::snprintf(label, sizeof label, "%s %d: contact %d.%d", velocity ? "velocity" : "position",
+                event.iteration, event.manifold, event.point);
+  story.label = label;
+  const std::string why = solver == "micro" ? ", the worst closing speed" : ", in sweep order";
+  story.lines.push_back(story.label + why);
+  if (!velocity) {
+    story.lines.push_back(format("moved the bodies apart: %.3f mm of penetration removed",
+                                 1000.0 * event.desiredChange));
+    return story;
   }
-  return text;
+  if (!refersToPoint(event, after, manifolds) || before.size() != after.size()) return story;
+  const Manifold& manifold = manifolds[std::size_t(event.manifold)];
+  const ContactPoint& point = manifold.points[event.point];
+  const double closingBefore = -pointVelocity(before, manifold, point.point).dot(manifold.normal);
+  const double closingAfter = -pointVelocity(after, manifold, point.point).dot(manifold.normal);
+  const Vec2 accelerations = after[std::size_t(manifold.bodyB)].lastAcceleration -
+                             after[std::size_t(manifold.bodyA)].lastAcceleration;
+  story.lines.push_back(format("closing speed %.3f → %.3f m/s; Δv wanted %.3f m/s", closingBefore,
+                               closingAfter, event.desiredChange));
+  story.lines.push_back(
+      format("impulse λ_n = %.4f N s, λ_t = %.4f N s; accelerative velocity a·Δt = %.3f m/s",
+             event.normalImpulse, event.tangentImpulse,
+             std::abs(accelerations.dot(manifold.normal)) * dt));
+  story.lines.push_back(frictionLine(manifold, point));
+  return story;
 }
 
 TraceRecorder::TraceRecorder(const Simulation& simulation, const FrameRenderer& renderer,
                              FrameWriter& writer)
     : simulation_(simulation),
       renderer_(renderer.camera(), renderer.scene(), withVelocities(renderer.settings())),
-      writer_(writer) {
+      writer_(writer),
+      before_(simulation.bodies()) {
+  renderer_.setLog(renderer.log());
   renderer_.fitForces(simulation);
 }
 
 void TraceRecorder::onSolverEvent(const SolverEvent& event, const std::vector<Body>& bodies,
                                   const std::vector<Manifold>& manifolds) {
-  FrameInfo info = render::describe(simulation_, renderer_.scene());
+  FrameInfo info = describe(simulation_, renderer_.scene());
   info.step = simulation_.stepCount() + 1;  // the step being taken, not the steps done
   info.energy = totalEnergy(bodies, simulation_.settings().gravity);
+  const EventStory story = tellEvent(event, before_, bodies, manifolds, simulation_.solverName(),
+                                     simulation_.settings().dt);
   std::vector<std::string> lines = headsUpLines(info);
-  lines.push_back(describe(event));
-  renderer_.draw(bodies, manifolds, lines);
-  drawHighlight(event, manifolds);
-  writer_.write(info.step, renderer_.canvas());
+  lines.insert(lines.end(), story.lines.begin(), story.lines.end());
+  const SceneState state{info.time, simulation_.settings().gravity};
+  const Frame frame = renderer_.draw(bodies, manifolds, state, lines, story.label,
+                                     [&](Drawing& drawing, DrawnKinds& drawn) {
+                                       drawHighlight(drawing, drawn, event, bodies, manifolds);
+                                     });
+  writer_.write(info.step, frame, event.phase == SolverEvent::Phase::Velocity);
+  before_ = bodies;
 }
 
-void TraceRecorder::drawHighlight(const SolverEvent& event,
-                                  const std::vector<Manifold>& manifolds) {
-  if (!refersToPoint(event, manifolds)) return;
+void TraceRecorder::drawHighlight(Drawing& drawing, DrawnKinds& drawn, const SolverEvent& event,
+                                  const std::vector<Body>& bodies,
+                                  const std::vector<Manifold>& manifolds) const {
+  if (!refersToPoint(event, bodies, manifolds)) return;
   const RenderSettings& settings = renderer_.settings();
-  const Manifold& manifold = manifolds[event.manifold];
+  const Camera& camera = renderer_.camera();
+  const Manifold& manifold = manifolds[std::size_t(event.manifold)];
   const Vec2& point = manifold.points[event.point].point;
   const Color highlight = settings.colours.highlight;
-  fillCircle(renderer_.canvas(), renderer_.camera().toPixels(point), settings.highlightRadius,
-             withOpacity(highlight, 0.0), highlight, settings.highlightWidth);
+  drawing.setRole("highlight");
+  drawing.ring(camera.toPixels(point), settings.highlightRadius, highlight,
+               settings.highlightWidth);
   const Vec2 impulse =
       event.normalImpulse * manifold.normal + event.tangentImpulse * manifold.tangent();
-  drawWorldArrow(renderer_.canvas(), renderer_.camera(), point,
-                 settings.traceImpulseScale * impulse, highlight, settings);
+  // At the run's force scale, as the force λ/Δt the event's impulse stands for over the step,
+  // so it compares with the contact forces and the legend's scale bar.
+  const ForceScale& forces = renderer_.forces();
+  drawWorldArrow(drawing, camera, point, forces.metresPerNewton / forces.dt * impulse, highlight,
+                 settings);
+  drawn.highlight = true;
+  if (event.phase != SolverEvent::Phase::Velocity || before_.size() != bodies.size()) return;
+  drawing.setRole("velocity before");
+  const double beforeLength = drawWorldArrow(
+      drawing, camera, point, settings.velocityScale * pointVelocity(before_, manifold, point),
+      withOpacity(highlight, 0.4), settings);
+  drawing.setRole("velocity after");
+  const double afterLength = drawWorldArrow(
+      drawing, camera, point, settings.velocityScale * pointVelocity(bodies, manifold, point),
+      highlight, settings);
+  drawn.velocityChange = beforeLength > 0.0 || afterLength > 0.0;
 }
 
 FrameWriter traceStep(Simulation& simulation, long step, const FrameRenderer& renderer,
-                      const std::filesystem::path& root) {
+                      const std::filesystem::path& root, ImageFormat format) {
   if (step < 1 || simulation.stepCount() >= step) {
     throw std::invalid_argument("cannot trace step " + std::to_string(step) +
                                 ": the simulation is at step " +
                                 std::to_string(simulation.stepCount()));
   }
   FrameWriter writer(root, renderer.scene(), 1, tracePrefix(renderer.scene(), step),
-                     renderer.settings());
+                     renderer.settings(), format);
   while (simulation.stepCount() < step - 1) simulation.step();
   TraceRecorder recorder(simulation, renderer, writer);
   simulation.setObserver(&recorder);

@@ -63,6 +63,18 @@ std::string figuresJson(const FigureTable& figures) {
   return json + "]}";
 }
 
+std::string plotsJson(const std::vector<ViewerPlot>& plots) {
+  std::string json = "[";
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    const ViewerPlot& plot = plots[i];
+    json += (i ? ",{" : "{") + std::string("\"file\":") + jsonString(plot.file) +
+            ",\"timeMin\":" + jsonNumber(plot.timeMin) +
+            ",\"timeMax\":" + jsonNumber(plot.timeMax) + ",\"left\":" + jsonNumber(plot.left) +
+            ",\"right\":" + jsonNumber(plot.right) + "}";
+  }
+  return json + "]";
+}
+
 // The frame sits at the page's top left corner at its own size, so a screenshot of the page
 // shows the frame's pixels unchanged there (scripts/viewer-test compares them).
 const char* const kPageHead = R"(<!DOCTYPE html>
@@ -73,10 +85,14 @@ body { margin: 0; font: 14px sans-serif; background: #fafaf7; }
 #controls, #figures { margin: 8px; }
 #slider { width: 60%; vertical-align: middle; }
 table { border-collapse: collapse; } td { padding: 1px 10px 1px 0; }
+.plot { position: relative; display: inline-block; margin: 8px; }
+.plot img { display: block; width: 640px; }
+.cursor { position: absolute; top: 10%; bottom: 12%; width: 2px; background: #cc0099; }
 </style></head><body>
 <img id="frame" alt="frame">
 <div id="controls"><button id="play">play</button>
 <input id="slider" type="range" min="0" value="0"> <span id="label"></span></div>
+<div id="plots"></div>
 <table id="figures"></table>
 <p style="margin:8px">Left and right arrow keys step one frame; space plays. Add #frame=N to the
 address to open at frame N. The colours and arrows are explained in each frame's legend.</p>
@@ -87,6 +103,20 @@ const char* const kPageScript = R"(
 const slider = document.getElementById("slider");
 const image = document.getElementById("frame");
 slider.max = frames.length - 1;
+plots.forEach((plot, i) => {
+  document.getElementById("plots").insertAdjacentHTML("beforeend",
+      '<div class="plot"><img src="' + plot.file + '" alt="plot"><div class="cursor" id="cursor-' +
+      i + '"></div></div>');
+});
+// The cursor of each plot at the frame's time, as a percentage of the plot's width.
+function moveCursors(index) {
+  const time = steps[index] * secondsPerStep;
+  plots.forEach((plot, i) => {
+    const along = (time - plot.timeMin) / (plot.timeMax - plot.timeMin);
+    const x = 100 * (plot.left + Math.max(0, Math.min(1, along)) * (plot.right - plot.left));
+    document.getElementById("cursor-" + i).style.left = x.toFixed(2) + "%";
+  });
+}
 function show(index) {
   index = Math.max(0, Math.min(frames.length - 1, index));
   slider.value = index;
@@ -101,6 +131,7 @@ function show(index) {
     html += "<tr><td>" + name + "</td><td>" + value + "</td></tr>";
   });
   document.getElementById("figures").innerHTML = html;
+  moveCursors(index);
   history.replaceState(null, "", "#frame=" + index);
 }
 function fromAddress() {
@@ -131,13 +162,16 @@ std::string viewerName(const FrameWriter& writer, const std::string& scene) {
 }
 
 std::filesystem::path writeViewer(const FrameWriter& writer, const std::string& scene,
-                                  const FigureTable& figures, double framesPerSecond) {
+                                  const FigureTable& figures, double framesPerSecond,
+                                  const std::vector<ViewerPlot>& plots, double secondsPerStep) {
   const std::filesystem::path path = writer.directory() / viewerName(writer, scene);
   std::ofstream page(path);
   page << kPageHead << "const frames = " << framesJson(writer) << ";\n"
        << "const steps = " << stepsJson(writer) << ";\n"
        << "const figures = " << figuresJson(figures) << ";\n"
        << "const fps = " << jsonNumber(framesPerSecond) << ";\n"
+       << "const plots = " << plotsJson(plots) << ";\n"
+       << "const secondsPerStep = " << jsonNumber(secondsPerStep) << ";\n"
        << kPageScript;
   page.close();
   if (!page) throw RenderError("cannot write the viewer '" + path.string() + "'");

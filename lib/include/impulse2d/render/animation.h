@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "impulse2d/render/canvas.h"
 #include "impulse2d/render/frame_writer.h"
+#include "impulse2d/render/image.h"
 
 namespace impulse2d::render {
 
@@ -15,8 +15,8 @@ std::vector<Color> gifPalette();
 /// Index of the palette colour nearest `color` (squared RGB distance).
 int nearestPaletteIndex(const std::vector<Color>& palette, Color color);
 
-/// Writes directory()/PREFIX.gif from the writer's frames (read back from disk), each shown
-/// 1 / framesPerSecond s (GIF counts in hundredths, at least 2), looping forever. Returns its
+/// Writes directory()/PREFIX.gif from the writer's frames (rasterised from their pictures), each
+/// shown 1 / framesPerSecond s (GIF counts in hundredths, at least 2), looping forever. Returns its
 /// path. Throws RenderError when there are no frames or the file cannot be written.
 std::filesystem::path writeGif(const FrameWriter& writer, double framesPerSecond);
 

@@ -1,5 +1,7 @@
-// The camera: world metres (y up) to image pixels (y down). It is fitted once per run, from the
-// scene's starting bodies or its [render] table, so frames of a run share one view.
+// The camera: world metres (y up) to pixels of the scene area (y down), the part of a frame
+// between the heads-up strip above and the legend strip below, so no text ever covers a body.
+// It is fitted once per run, from the scene's starting bodies or its [render] table, so frames of
+// a run share one view.
 #pragma once
 
 #include <vector>
@@ -12,8 +14,11 @@ namespace impulse2d::render {
 
 /// A view of the world: image size, the world point at its centre and the scale.
 struct Camera {
-  int width = 800;             ///< pixels
-  int height = 600;            ///< pixels
+  int width = 800;             ///< pixels, of the scene area
+  int height = 600;            ///< pixels, of the scene area
+  double textSize = 15.0;      ///< pixels: the frame's text size (frameTextSize)
+  int headsUpHeight = 0;       ///< pixels: the strip above the scene area
+  int legendHeight = 0;        ///< pixels: the strip below it
   Vec2 centre = Vec2::Zero();  ///< m, world point at the image centre
   double scale = 50.0;         ///< pixels per metre
 
@@ -37,9 +42,21 @@ struct Camera {
 /// bodies within settings.staticFitReach of them (all bodies' bounds when none is dynamic).
 Aabb sceneBounds(const std::vector<Body>& bodies, const RenderSettings& settings);
 
-/// The camera of a view: its size, and its centre and scale where the view gives them; what it
-/// leaves unset is fitted so sceneBounds fills the image inside settings.fitPadding, below the
-/// heads-up line when that overlay is on.
+/// The pixel size of a frame's text: settings.textPerFrameHeight of its height, at least
+/// settings.minimumTextSize.
+double frameTextSize(const RenderSettings& settings, int frameHeight);
+/// Height of the heads-up strip (settings.headsUpLines lines; 0 with the overlay off) and of the
+/// legend strip (two lines; 0 with it off) of a frame `frameHeight` pixels high.
+double headsUpStripHeight(const RenderSettings& settings, int frameHeight);
+double legendStripHeight(const RenderSettings& settings, int frameHeight);
+
+/// The camera of a frame `width` × `height` pixels (strips included): the scene area between
+/// the strips. A view with centre and scale shows the region its own width and height showed at
+/// that scale, fitted into the area; what the view leaves unset is fitted so sceneBounds fills
+/// the area inside settings.fitPadding.
+Camera fitCamera(const std::vector<Body>& bodies, const ViewDef& view,
+                 const RenderSettings& settings, int width, int height);
+/// The same at the view's own size.
 Camera fitCamera(const std::vector<Body>& bodies, const ViewDef& view,
                  const RenderSettings& settings);
 

@@ -1,16 +1,19 @@
-// What a frame shows: the bodies coloured by state with a mark of their rotation, each contact
-// point with its normal, the step's normal and friction impulses as force arrows (λ/dt), a gauge
-// of how close friction is to its limit, heads-up lines, and a legend strip saying what it all
-// means (legend.h).
+// What a frame shows: the bodies coloured by state with a mark of their rotation, and everything
+// that acts on them drawn to one force scale: applied loads at their points with their values,
+// the step's normal and friction forces at each contact point (λ/dt), the friction limit μN
+// marked on each friction arrow, the slip velocity where a contact slides, optionally weights;
+// a gauge of how close each contact's friction is to its limit; a heads-up strip on top and a
+// legend strip below saying what it all means (legend.h).
 // Draws any Simulation (ours or Box2D's), or bodies and manifolds caught mid-step by a trace.
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "impulse2d/render/camera.h"
-#include "impulse2d/render/canvas.h"
+#include "impulse2d/render/drawing.h"
 #include "impulse2d/render/render_settings.h"
 #include "impulse2d/simulation.h"
 
@@ -58,26 +61,24 @@ double frictionUse(const Manifold& manifold);
 
 /// What a frame showed, for its legend: which body states and which arrow kinds.
 struct DrawnKinds {
-  /// by BodyState: a body drawn in it
-  std::array<bool, kBodyStateCount> states{};
-  /// a normal force arrow
-  bool normalForces = false;
-  /// a friction arrow inside the cone
-  bool staticFriction = false;
-  /// a friction arrow on the cone
-  bool dynamicFriction = false;
-  /// a velocity arrow
-  bool velocities = false;
-  /// a friction gauge
-  bool gauges = false;
+  std::array<bool, kBodyStateCount> states{};  ///< by BodyState: a body drawn in it
+  bool normalForces = false;                   ///< a normal force arrow
+  bool staticFriction = false;                 ///< a friction arrow inside the cone
+  bool dynamicFriction = false;                ///< a friction arrow on the cone
+  bool frictionLimits = false;                 ///< a μN mark on a friction arrow
+  bool loads = false;                          ///< an applied load's arrow
+  bool weights = false;                        ///< a weight's arrow
+  bool slidingVelocities = false;              ///< a slip velocity's arrow
+  bool velocities = false;                     ///< a body velocity's arrow
+  bool gauges = false;                         ///< a friction gauge
+  bool highlight = false;                      ///< a trace frame's resolved contact and its impulse
+  bool velocityChange = false;                 ///< a trace frame's point velocity before and after
 };
 
-/// What the heads-up line says.
+/// What the heads-up strip says.
 struct FrameInfo {
-  /// the scene's name
-  std::string scene;
-  /// the solver's name
-  std::string solver;
+  std::string scene;    ///< the scene's name
+  std::string solver;   ///< the solver's name
   long step = 0;        ///< steps taken
   double time = 0.0;    ///< s, simulated
   double energy = 0.0;  ///< J, kinetic plus potential
@@ -87,61 +88,91 @@ struct FrameInfo {
 FrameInfo describe(const Simulation& simulation, const std::string& scene);
 /// Total kinetic plus potential energy (J) of the dynamic bodies in gravity g.
 double totalEnergy(const std::vector<Body>& bodies, const Vec2& gravity);
-/// {"scene  solver", "step 120  t = 2.000 s  E = 1234.5 J"}: two short lines, so they can be
-/// drawn large enough to read on a contact sheet's thumbnail.
+/// {"scene · solver", "step 120   t = 2.000 s   E = 1234.5 J"}.
 std::vector<std::string> headsUpLines(const FrameInfo& info);
-/// Font pixels per pixel of the frame's text, for a frame `frameWidth` pixels wide.
-double frameTextScale(const RenderSettings& settings, int frameWidth);
-/// Height in pixels of one heads-up line with its background, in a frame that wide.
-double headsUpHeight(const RenderSettings& settings, int frameWidth);
+/// "step 120  t = 2.00 s": a thumbnail's caption.
+std::string caption(const FrameInfo& info);
 
-/// The bodies and contact overlays, over whatever the canvas holds; returns what it drew.
-DrawnKinds drawScene(Canvas& canvas, const Camera& camera, const std::vector<Body>& bodies,
+/// The contacts of bodies set down before any step: pairs whose surfaces are within
+/// `margin` (m), so a box placed at rest on the ground is drawn resting at step 0, not flying.
+std::vector<Manifold> startingContacts(const std::vector<Body>& bodies, double margin);
+
+/// What a scene shows besides its bodies and manifolds.
+struct SceneState {
+  /// s: the loads are drawn at their value at this time, the start of the (sub)step whose
+  /// contact forces the frame shows.
+  double time = 0.0;
+  Vec2 gravity = Vec2(0.0, -9.81);  ///< for weights
+};
+
+/// The bodies and everything acting on them, in camera pixels; returns what it drew.
+DrawnKinds drawScene(Drawing& drawing, const Camera& camera, const std::vector<Body>& bodies,
                      const std::vector<Manifold>& manifolds, const ForceScale& forces,
-                     const RenderSettings& settings);
-/// An arrow from world point `at` along the world displacement `vector` (m), cut to
-/// settings.maxArrowLength and left out under settings.minArrowLength: how forces (scaled by
-/// ForceScale) and velocities (by velocityScale) are drawn. Returns whether it was drawn.
-bool drawWorldArrow(Canvas& canvas, const Camera& camera, const Vec2& at, const Vec2& vector,
-                    Color color, const RenderSettings& settings);
-/// Lines of text along the top of the canvas, each on a pale background.
-void drawHeadsUp(Canvas& canvas, const std::vector<std::string>& lines,
-                 const RenderSettings& settings);
+                     const SceneState& state, const RenderSettings& settings);
+/// An arrow from world point `at` along the world displacement `vector` (m), starting `shift`
+/// pixels off that point, cut to settings.maxArrowLength of the scene and left out under
+/// settings.minArrowLength: how forces (scaled by ForceScale) and velocities (by velocityScale)
+/// are drawn. With `halo`, a pale rim under it keeps it visible over bodies (contact forces,
+/// which stand beside the bodies' edges and are many, go without). Returns the arrow's pixel
+/// length (0: not drawn).
+double drawWorldArrow(Drawing& drawing, const Camera& camera, const Vec2& at, const Vec2& vector,
+                      Color color, const RenderSettings& settings, const Vec2& shift = Vec2::Zero(),
+                      bool halo = true);
 
-/// Draws frames of one camera into a canvas it keeps, so a run allocates its image once. The
-/// canvas is the camera's size plus the legend strip under it when the legend is on.
+/// A frame: its picture, where the scene area lies in it (a thumbnail shows that part alone),
+/// and the caption a thumbnail carries.
+struct Frame {
+  Picture picture;                  ///< the whole frame: heads-up strip, scene, legend strip
+  Vec2 sceneCorner = Vec2::Zero();  ///< pixels: the scene area's top left corner
+  Vec2 sceneSize = Vec2::Zero();    ///< pixels
+  std::string caption;              ///< under its thumbnail on a sheet
+};
+
+/// Extra drawing over a frame's scene (a trace frame's highlight), in camera pixels; it marks
+/// what it drew in DrawnKinds so the legend names it.
+using SceneExtra = std::function<void(Drawing&, DrawnKinds&)>;
+
+/// Draws frames of one camera. The picture is the frame's width × height: the heads-up strip,
+/// the scene area (the camera's), the legend strip.
 class FrameRenderer {
  public:
-  /// Frames of `scene` seen by `camera`, drawn with `settings`.
+  /// Frames of `scene` through `camera`, drawn with `settings`.
   FrameRenderer(const Camera& camera, std::string scene, const RenderSettings& settings = {});
 
   /// The frame of a simulation as it stands. The first call fits the run's force scale to the
   /// simulation's bodies, gravity and dt, unless fitForces was called.
-  const Canvas& draw(const Simulation& simulation);
+  Frame draw(const Simulation& simulation);
   /// Fits the force scale every later frame uses (fitForceScale), with the substep's length as
   /// the time an impulse acts (a world's manifolds hold its last substep's impulses).
   void fitForces(const Simulation& simulation);
-  /// The force scale the frames are drawn with.
+  /// The run's force scale (fitted by the first frame or fitForces).
   const ForceScale& forces() const { return forces_; }
-  /// The frame of bodies and manifolds with the heads-up lines given (none: no heads-up).
-  const Canvas& draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
-                     const std::vector<std::string>& headsUp);
+  /// The frame of bodies and manifolds, with the heads-up lines and caption given.
+  Frame draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
+             const SceneState& state, const std::vector<std::string>& headsUp,
+             const std::string& caption, const SceneExtra& extra = {});
 
-  /// The camera, the scene name and the settings the frames are drawn with.
+  /// The camera of every frame.
   const Camera& camera() const { return camera_; }
-  /// the scene's name
+  /// The scene's name, for the heads-up strip.
   const std::string& scene() const { return scene_; }
-  /// how frames look
+  /// The settings frames are drawn with.
   const RenderSettings& settings() const { return settings_; }
-  /// The last frame drawn, for drawing more on top of it.
-  Canvas& canvas() { return canvas_; }
+  /// pixels, of the whole frame
+  int frameWidth() const { return camera_.width; }
+  /// pixels, of the whole frame: the strips and the scene area
+  int frameHeight() const;
+  /// Every drawing call of the frames that follow goes to `log` too (for tests); null: none.
+  void setLog(DrawingLog* log) { log_ = log; }
+  /// The log drawing calls go to, or null.
+  DrawingLog* log() const { return log_; }
 
  private:
   Camera camera_;
   std::string scene_;
   RenderSettings settings_;
   ForceScale forces_;
-  Canvas canvas_;
+  DrawingLog* log_ = nullptr;
 };
 
 }  // namespace impulse2d::render

@@ -1,6 +1,8 @@
-// Numbered PNG frames of a run, every K-th step, and the run's contact sheet:
+// Numbered frames of a run, every K-th step, and the run's contact sheet, as PNG, SVG or PDF:
 //   ROOT/SCENE/PREFIX_00000.png, PREFIX_00001.png, ...  (numbered from 0 without gaps, ready for
 //   `ffmpeg -i PREFIX_%05d.png`), and ROOT/SCENE/PREFIX_sheet.png.
+// The writer keeps each frame's picture (a recording of its drawing calls, not its pixels) for
+// the sheet and the GIF.
 // PREFIX is the scene's name for a run; traces and comparisons use their own (tracePrefix,
 // comparePrefix) so their frames sit beside the run's without mixing with them.
 #pragma once
@@ -9,7 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "impulse2d/render/canvas.h"
+#include "impulse2d/render/drawing.h"
+#include "impulse2d/render/frame.h"
 #include "impulse2d/render/png.h"
 #include "impulse2d/render/render_settings.h"
 
@@ -27,17 +30,19 @@ class FrameWriter {
   /// frames of an earlier run with the same prefix (so ffmpeg sees only this run), and checks the
   /// directory is writable. Throws one RenderError naming the path when it is not.
   FrameWriter(const std::filesystem::path& root, const std::string& scene, int every = 1,
-              const std::string& prefix = "", const RenderSettings& settings = {});
+              const std::string& prefix = "", const RenderSettings& settings = {},
+              ImageFormat format = ImageFormat::Png);
 
   /// True for the steps whose frames are kept: 0, every, 2·every, ...
   bool wants(long step) const { return step % every_ == 0; }
-  /// Writes the next numbered frame, of the given step; returns its path.
-  std::filesystem::path write(long step, const Canvas& frame);
-  /// Writes PREFIX_sheet.png from the frames written so far (read back from disk, so a run keeps
-  /// no images in memory); returns its path. Throws RenderError when no frame was written.
+  /// Writes the next numbered frame, of the given step; returns its path. A `preferred` frame
+  /// goes on the sheet before the others (chooseFrames).
+  std::filesystem::path write(long step, const Frame& frame, bool preferred = false);
+  /// Writes PREFIX_sheet from the frames written so far; returns its path. Throws RenderError
+  /// when no frame was written.
   std::filesystem::path writeContactSheet() const;
 
-  /// Path of frame number `index`: directory()/PREFIX_%05d.png.
+  /// Path of frame number `index`: directory()/PREFIX_%05d.png (.svg, .pdf).
   std::filesystem::path framePath(int index) const;
   /// Path of the contact sheet: directory()/PREFIX_sheet.png.
   std::filesystem::path sheetPath() const;
@@ -51,6 +56,10 @@ class FrameWriter {
   int frameCount() const { return int(steps_.size()); }
   /// The step of each frame written, by frame number.
   const std::vector<long>& steps() const { return steps_; }
+  /// The frames written, by frame number.
+  const std::vector<Frame>& frames() const { return frames_; }
+  /// The frames' file format.
+  ImageFormat format() const { return format_; }
 
  private:
   void prepareDirectory(const std::filesystem::path& root);
@@ -60,7 +69,11 @@ class FrameWriter {
   std::string prefix_;
   int every_ = 1;
   RenderSettings settings_;
+  ImageFormat format_ = ImageFormat::Png;
+  PictureWriter pictures_;
   std::vector<long> steps_;
+  std::vector<Frame> frames_;
+  std::vector<bool> preferred_;
 };
 
 }  // namespace impulse2d::render

@@ -1,7 +1,11 @@
-// Step-by-step frames: a SolverObserver that draws one frame per solver event of a traced step.
-// Each frame highlights the contact being resolved, labels the velocity change it wanted and the
-// impulse applied, and shows every body with the velocity it has after that impulse.
+// Step-by-step frames: a SolverObserver that draws one frame per solver event of a traced step,
+// telling in the lecture's words what happened: which contact was resolved and why, its closing
+// speed before and after, the impulse, the accelerative velocity, and whether friction held
+// (|λt| against μλn); the point's velocity before and after are drawn as arrows.
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "impulse2d/render/frame.h"
 #include "impulse2d/render/frame_writer.h"
@@ -9,6 +13,18 @@
 #include "impulse2d/solver.h"
 
 namespace impulse2d::render {
+
+/// What one event did, in the lecture's words: the lines a trace frame adds under its heads-up.
+struct EventStory {
+  std::string label;               ///< "velocity 3: contact 5.0": the thumbnail's caption
+  std::vector<std::string> lines;  ///< the heads-up lines
+};
+
+/// The story of `event`, from the bodies before it (`before`) and after it (`after`), under
+/// `solver` ("micro" picks the worst closing speed; the others sweep in order) with time step dt.
+EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
+                     const std::vector<Body>& after, const std::vector<Manifold>& manifolds,
+                     const std::string& solver, double dt);
 
 /// Watches one step of a simulation and writes a frame for every solver event in it.
 class TraceRecorder : public SolverObserver {
@@ -21,24 +37,20 @@ class TraceRecorder : public SolverObserver {
                      const std::vector<Manifold>& manifolds) override;
 
  private:
-  void drawHighlight(const SolverEvent& event, const std::vector<Manifold>& manifolds);
+  void drawHighlight(Drawing& drawing, DrawnKinds& drawn, const SolverEvent& event,
+                     const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds) const;
 
   const Simulation& simulation_;
   FrameRenderer renderer_;
   FrameWriter& writer_;
+  std::vector<Body> before_;  ///< the bodies as the last event left them
 };
-
-/// What one event did, for the trace frame's second heads-up line: "velocity 3: contact 5.0
-/// dv = 0.123 m/s  J = (0.456, -0.010) N s" (the wanted velocity change along the normal, and the
-/// impulse applied along the normal and the tangent), or for the position phase the penetration
-/// removed. "contact 5.0" is point 0 of manifold 5.
-std::string describe(const SolverEvent& event);
 
 /// Runs the simulation up to step N (N ≥ 1: the step that ends with stepCount() == N), drawing
 /// one frame per solver event of step N to frames/SCENE/SCENE_stepNNNNN_00000.png ... under
-/// `root`, and that trace's contact sheet. Returns the writer, which knows the frames written.
-/// Simulations that cannot report solver events write no frames (frameCount() == 0).
+/// `root`, and that trace's contact sheet (velocity events first). Returns the writer, which
+/// knows the frames written. Simulations that cannot report solver events write no frames.
 FrameWriter traceStep(Simulation& simulation, long step, const FrameRenderer& renderer,
-                      const std::filesystem::path& root);
+                      const std::filesystem::path& root, ImageFormat format = ImageFormat::Png);
 
 }  // namespace impulse2d::render

@@ -8,10 +8,11 @@
 
 namespace impulse2d {
 
+/// The values a setting may take: from lowest to highest, each end included or not.
 struct SettingRange {
-  double lowest = 0.0;
+  double lowest = 0.0;         ///< the lower end
   bool lowestIncluded = true;  ///< [lowest, ...] or (lowest, ...]
-  double highest = 0.0;
+  double highest = 0.0;        ///< the upper end
   /// Why the upper bound is there, for keys that would make a run unbounded; empty otherwise.
   std::string bound;
 };
