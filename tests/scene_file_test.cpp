@@ -247,8 +247,8 @@ TEST_CASE("each kind of bad input is one error at its place", "[scene-file][erro
   SECTION("unknown key, naming it and the known keys") {
     CHECK(errorOf(ball + "fricton = 0.5\n") ==
           "bad.toml:4:1: unknown key 'fricton' in [[body]] (known: name, type, shape, size, "
-          "radius, vertices, position, angle_deg, velocity, angular_velocity_deg, density, "
-          "friction, restitution, force, force_rate, force_point, torque)");
+          "radius, vertices, position, on, offset, angle_deg, velocity, angular_velocity_deg, "
+          "density, friction, restitution, force, force_rate, force_point, torque)");
     MicroCollisionSettings micro;
     CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nwarm_starting = true\n" + ball) ==
           "bad.toml:4:1: unknown key 'warm_starting' in [solver] for solver 'micro' (known: " +

@@ -2,9 +2,11 @@
 // expand to ordinary boxes.
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "impulse2d/shape.h"
+#include "placement.h"
 #include "scene_tables.h"
 #include "toml_reading.h"
 
@@ -99,11 +101,36 @@ void readLoad(const toml::table& table, BodyDef& body) {
   }
 }
 
-BodyDef readBody(const toml::table& table, size_t index) {
+/// `on = "name"` and `offset`: the body rests on another, placed once all bodies are read; a
+/// `position` would contradict it, and an `offset` means nothing without it.
+std::optional<Placement> readPlacement(const toml::table& table, size_t index) {
+  const toml::node* on = table.get("on");
+  if (!on) {
+    if (const auto offset = table.find("offset"); offset != table.end()) {
+      fail(offset->first.source(),
+           "'offset' places a body along the face it rests on; it needs "
+           "on = \"name\"");
+    }
+    return std::nullopt;
+  }
+  if (const auto position = table.find("position"); position != table.end()) {
+    fail(position->first.source(), "'position' and 'on' both place the body; give one of them");
+  }
+  Placement placement;
+  placement.body = index;
+  placement.support = readString(*on, "on");
+  placement.where = on->source();
+  readOptional(table, "offset", placement.offset);
+  const toml::node* offset = table.get("offset");
+  placement.offsetWhere = offset ? offset->source() : on->source();
+  return placement;
+}
+
+BodyDef readBody(const toml::table& table, size_t index, std::vector<Placement>& placements) {
   rejectUnknownKeys(table,
-                    {"name", "type", "shape", "size", "radius", "vertices", "position", "angle_deg",
-                     "velocity", "angular_velocity_deg", "density", "friction", "restitution",
-                     "force", "force_rate", "force_point", "torque"},
+                    {"name", "type", "shape", "size", "radius", "vertices", "position", "on",
+                     "offset", "angle_deg", "velocity", "angular_velocity_deg", "density",
+                     "friction", "restitution", "force", "force_rate", "force_point", "torque"},
                     "[[body]]");
   BodyDef body;
   body.name = "body" + std::to_string(index);
@@ -125,6 +152,10 @@ BodyDef readBody(const toml::table& table, size_t index) {
   // The file places the body's origin; the engine places its centre of mass.
   body.position += rotation(body.angle) * shape.centroid;
   body.load.point -= shape.centroid;
+  if (std::optional<Placement> placement = readPlacement(table, index)) {
+    placement->turn = body.angle;
+    placements.push_back(*placement);
+  }
   return body;
 }
 
@@ -211,9 +242,10 @@ void rejectRepeatedNames(const Scene& scene, const std::vector<toml::source_regi
 
 void readBodies(const toml::table& root, Scene& scene) {
   std::vector<toml::source_region> origins;
+  std::vector<Placement> placements;
   if (const toml::node* bodies = root.get("body")) {
     for (const toml::table* table : readTableArray(*bodies, "body")) {
-      scene.bodies.push_back(readBody(*table, scene.bodies.size()));
+      scene.bodies.push_back(readBody(*table, scene.bodies.size(), placements));
       origins.push_back(nameOrigin(*table));
     }
   }
@@ -229,8 +261,9 @@ void readBodies(const toml::table& root, Scene& scene) {
       origins.resize(scene.bodies.size(), table->source());
     }
   }
-  for (size_t i = 0; i < scene.bodies.size(); ++i) rejectUnsimulable(scene.bodies[i], origins[i]);
   rejectRepeatedNames(scene, origins);
+  placeOnSurfaces(scene, placements);
+  for (size_t i = 0; i < scene.bodies.size(); ++i) rejectUnsimulable(scene.bodies[i], origins[i]);
 }
 
 }  // namespace impulse2d::scene_file
