@@ -6,10 +6,9 @@
 //
 //   solver_benchmark             the full tables (a few minutes)
 //   solver_benchmark --quick     every table on shortened runs, in seconds (a smoke test)
-//   solver_benchmark --speed [SCENE...]  issue 15's table only: sequential impulses at 8+3 and at
-//   their
-//                                defaults against Box2D 8+3 on pyramid20, pyramid40, rain and
-//                                stack20, time ratios (medians, same run) and accuracy
+//   solver_benchmark --speed [SCENE...]  sequential impulses at 8+3, at their defaults and under
+//                                the box2d_2_4 preset against Box2D 8+3 on pyramid20, pyramid40,
+//                                rain and stack20: time ratios (medians, same run) and accuracy
 //   solver_benchmark --callgrind SCENE SOLVER ITERATIONS WARMUP STEPS
 //                                runs WARMUP steps of the shipped SCENE with SOLVER at ITERATIONS
 //                                (0: its default), then STEPS steps inside measuredSteps(), for
@@ -45,7 +44,11 @@ struct MethodRun {
   std::string solver;
   int iterations = 0;    ///< 0: the method's default
   double runTime = 0.0;  ///< s; 0: the scene's own steps
+  std::string preset;    ///< the solver's preset (presets.h); empty: our defaults
 };
+
+/// The method as published by Box2D 2.4.1 on our sequential impulses (8 + 3 iterations).
+const MethodRun kBox2d24Preset = {"sequential preset box2d_2_4", "sequential", 0, 0.0, "box2d_2_4"};
 
 /// How the whole benchmark is shortened by --quick.
 struct Length {
@@ -57,22 +60,23 @@ struct Length {
 };
 
 const std::vector<MethodRun> kPyramidMethods = {
-    {"box2d 8+3 iterations", "box2d", 8, 0.0},
-    {"sequential 8 iterations + position pass", "sequential", 8, 0.0},
-    {"sequential 16 iterations + position pass", "sequential", 16, 0.0},
-    {"sequential ≤ 40 sweeps, stop once converged (default) + position pass", "sequential", 0, 0.0},
-    {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
-    {"micro ≤ 200 per contact, more while progressing (default)", "micro", 0, kShortRunTime},
-    {"reference (active set)", "reference", 0, kShortRunTime},
+    {"box2d 8+3 iterations", "box2d", 8, 0.0, ""},
+    {"sequential 8 iterations + position pass", "sequential", 8, 0.0, ""},
+    {"sequential 16 iterations + position pass", "sequential", 16, 0.0, ""},
+    {"sequential ≤ 40 sweeps, stop once converged (default) + position pass", "sequential", 0, 0.0,
+     ""},
+    {"soft step 4 substeps (default)", "soft_step", 0, 0.0, ""},
+    {"micro ≤ 200 per contact, more while progressing (default)", "micro", 0, kShortRunTime, ""},
+    {"reference (active set)", "reference", 0, kShortRunTime, ""},
 };
 
 const std::vector<MethodRun> kStackMethods = {
-    {"box2d 8+3", "box2d", 8, 0.0},
-    {"sequential 8", "sequential", 8, 0.0},
-    {"sequential ≤ 40, converged (default)", "sequential", 0, 0.0},
-    {"soft step 4 substeps (default)", "soft_step", 0, 0.0},
-    {"micro ≤ 200 per contact, more while progressing (default)", "micro", 0, 0.0},
-    {"reference", "reference", 0, 0.0},
+    {"box2d 8+3", "box2d", 8, 0.0, ""},
+    {"sequential 8", "sequential", 8, 0.0, ""},
+    {"sequential ≤ 40, converged (default)", "sequential", 0, 0.0, ""},
+    {"soft step 4 substeps (default)", "soft_step", 0, 0.0, ""},
+    {"micro ≤ 200 per contact, more while progressing (default)", "micro", 0, 0.0, ""},
+    {"reference", "reference", 0, 0.0, ""},
 };
 
 RunPlan planFor(const Scene& scene, const MethodRun& method, const Length& length) {
@@ -99,8 +103,9 @@ std::vector<RunFigures> measure(const Scene& scene, const std::vector<MethodRun>
                                 const Length& length) {
   std::vector<MeasuredRun> runs;
   for (const MethodRun& method : methods) {
-    runs.emplace_back(withMethod(scene, method.solver, method.iterations),
-                      planFor(scene, method, length));
+    runs.emplace_back(
+        withPreset(withMethod(scene, method.solver, method.iterations), method.preset),
+        planFor(scene, method, length));
   }
   runSideBySide(runs);
   std::vector<RunFigures> figures;
@@ -208,30 +213,36 @@ void printAnalyticTable(const std::vector<std::string>& solvers) {
 constexpr double kSpeedTargetAtBox2dIterations = 0.8;
 constexpr double kSpeedTargetAtDefaults = 1.0;
 
-/// One scene's row of the speed table: Box2D 8+3, sequential 8+3, sequential at its defaults.
+/// One scene's row of the speed table: Box2D 8+3, sequential 8+3, sequential at its defaults,
+/// sequential under the box2d_2_4 preset.
 void printSpeedRow(const std::string& sceneName, const std::vector<RunFigures>& f) {
   const double atBox2dIterations = f[1].medianMicroseconds / f[0].medianMicroseconds;
   const double atDefaults = f[2].medianMicroseconds / f[0].medianMicroseconds;
-  std::printf("| %s | %.0f | %.2f× (%s) | %.2f× (%s) | %.2e / %.2e / %.2e | %.2e / %.2e / %.2e |",
-              sceneName.c_str(), f[0].medianMicroseconds, atBox2dIterations,
+  const double asBox2d = f[3].medianMicroseconds / f[0].medianMicroseconds;
+  std::printf("| %s | %.0f | %.2f× (%s) | %.2f× (%s) | %.2f× |", sceneName.c_str(),
+              f[0].medianMicroseconds, atBox2dIterations,
               atBox2dIterations <= kSpeedTargetAtBox2dIterations ? "met" : "not met", atDefaults,
-              atDefaults <= kSpeedTargetAtDefaults ? "met" : "not met", f[0].drift, f[1].drift,
-              f[2].drift, f[0].largestPenetration, f[1].largestPenetration,
-              f[2].largestPenetration);
-  std::printf(" %s / %s / %s |\n", cell(f[0].stackForceError, "%.2e").c_str(),
-              cell(f[1].stackForceError, "%.2e").c_str(),
-              cell(f[2].stackForceError, "%.2e").c_str());
+              atDefaults <= kSpeedTargetAtDefaults ? "met" : "not met", asBox2d);
+  for (auto figure :
+       {&RunFigures::drift, &RunFigures::largestPenetration, &RunFigures::stackForceError}) {
+    std::printf(" %s / %s / %s / %s |", cell(f[0].*figure, "%.2e").c_str(),
+                cell(f[1].*figure, "%.2e").c_str(), cell(f[2].*figure, "%.2e").c_str(),
+                cell(f[3].*figure, "%.2e").c_str());
+  }
+  std::printf("\n");
 }
 
 /// Issue 15: sequential impulses against Box2D 2.4.1 in one alternating run per scene.
 /// Instructions per step come from the --callgrind mode (docs/sequential-impulses.md).
 void printSpeedTable(const std::vector<std::string>& sceneNames) {
-  const std::vector<MethodRun> methods = {kStackMethods[0], kStackMethods[1], kStackMethods[2]};
+  const std::vector<MethodRun> methods = {kStackMethods[0], kStackMethods[1], kStackMethods[2],
+                                          kBox2d24Preset};
   std::printf("\n### Sequential impulses against Box2D 2.4.1 (medians, same run)\n\n");
   std::printf(
       "| scene | Box2D 8+3 µs | sequential 8+3 / Box2D (≤ %.1f×) | sequential defaults / Box2D "
-      "(≤ %.1f×) | settled drift m (Box2D / 8+3 / defaults) | largest penetration m | stack "
-      "force error |\n| --- | --- | --- | --- | --- | --- | --- |\n",
+      "(≤ %.1f×) | preset box2d_2_4 / Box2D | settled drift m (Box2D / 8+3 / defaults / "
+      "box2d_2_4) | largest penetration m | stack force error |\n| --- | --- | --- | --- | --- | "
+      "--- | --- | --- |\n",
       kSpeedTargetAtBox2dIterations, kSpeedTargetAtDefaults);
   for (const std::string& sceneName : sceneNames) {
     const Scene scene = shippedScene(sceneName);

@@ -20,10 +20,10 @@ std::vector<Method> baseMethods() {
       // stack needs (docs/micro-collisions.md).
       {"micro − acceleration removal",
        "micro",
-       {"solver.remove_acceleration_velocity=false", "solver.warm_start=false"}},
+       {"solver.remove_acceleration_velocity=false", "solver.warm_starting=false"}},
       {"micro − low-speed restitution",
        "micro",
-       {"solver.lower_restitution_at_low_speed=false", "solver.warm_start=false"}},
+       {"solver.lower_restitution_at_low_speed=false", "solver.warm_starting=false"}},
       {"micro − friction", "micro", {"solver.friction=false"}},
       {"sequential", "sequential", {}},
       {"sequential − warm starting", "sequential", {"solver.warm_starting=false"}},
@@ -48,16 +48,13 @@ std::vector<Method> extraMethods() {
       {"soft step, 16 substeps at 240 Hz",
        "soft_step",
        {"solver.substeps=16", "solver.contact_hertz=240"}},
-      // Springs per carried mass: little sag, but one sweep per substep loses the softness that
-      // kept it steady under a mass ratio (docs/soft-step.md).
-      {"soft step + load-scaled stiffness", "soft_step", {"solver.load_scaled_stiffness=true"}},
       // The two points of a flat contact resolved together, impulses and moves; off, one point
       // at a time as the lecture does (docs/micro-collisions.md).
       {"micro − pairs", "micro", {"solver.pair_impulses=false", "solver.pair_moves=false"}},
       {"micro − both bounce fixes",
        "micro",
        {"solver.remove_acceleration_velocity=false", "solver.lower_restitution_at_low_speed=false",
-        "solver.warm_start=false"}},
+        "solver.warm_starting=false"}},
   };
 }
 

@@ -471,16 +471,15 @@ void stackScenes(std::vector<StressScene>& scenes) {
   const Criterion displacement{kDisplacementMeasure, kDisplacementLimit, kFallsByEye, true};
   const Knob boxes{"boxes", "", 2, 40, KnobScale::Integer};
   const Knob ratio{"mass ratio", "", 1, 1000, KnobScale::Logarithmic};
-  scenes.push_back(
-      {"box_stack",
-       "Tall stack of boxes",
-       boxes,
-       displacement,
-       boxStack,
-       probeOf<DisplacementProbe>(kSkinStep),
-       {},
-       {},
-       {"soft step, 16 substeps at 240 Hz", "soft step + load-scaled stiffness", "micro − pairs"}});
+  scenes.push_back({"box_stack",
+                    "Tall stack of boxes",
+                    boxes,
+                    displacement,
+                    boxStack,
+                    probeOf<DisplacementProbe>(kSkinStep),
+                    {},
+                    {},
+                    {"soft step, 16 substeps at 240 Hz", "micro − pairs"}});
   scenes.push_back({"circle_stack",
                     "Tall stack of circles",
                     {"balls", "", 2, 40, KnobScale::Integer},
@@ -499,21 +498,21 @@ void stackScenes(std::vector<StressScene>& scenes) {
                     {},
                     {},
                     {"micro − pairs"}});
-  scenes.push_back({"heavy_on_light",
-                    "Heavy box on light ones",
-                    ratio,
-                    {"deepest contact penetration (m), or how far a box was squeezed out "
-                     "sideways (over half a box)",
-                     kPenetrationLimit,
-                     "the heavy box visibly sinks into the box under it (2 cm), or the light boxes "
-                     "are squeezed out",
-                     true},
-                    heavyOnLight,
-                    probeOf<SinkProbe>(kSettledStep),
-                    {},
-                    {},
-                    {"sequential + 4 substeps", "soft step, 16 substeps at 240 Hz",
-                     "soft step + load-scaled stiffness", "micro − pairs"}});
+  scenes.push_back(
+      {"heavy_on_light",
+       "Heavy box on light ones",
+       ratio,
+       {"deepest contact penetration (m), or how far a box was squeezed out "
+        "sideways (over half a box)",
+        kPenetrationLimit,
+        "the heavy box visibly sinks into the box under it (2 cm), or the light boxes "
+        "are squeezed out",
+        true},
+       heavyOnLight,
+       probeOf<SinkProbe>(kSettledStep),
+       {},
+       {},
+       {"sequential + 4 substeps", "soft step, 16 substeps at 240 Hz", "micro − pairs"}});
   scenes.push_back({"heavy_pyramid",
                     "Pyramid topped by a heavy box",
                     ratio,

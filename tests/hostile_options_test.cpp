@@ -95,7 +95,7 @@ TEST_CASE("a --panel missing its colon or an assignment's '=' is refused, exit 2
   CHECK_FALSE(fs::exists(scratch / "frames"));
   const Outcome labelOnly = i2d(compare +
                                     " --panel 'defaults' --panel 'cold: "
-                                    "solver.warm_start=false'",
+                                    "solver.warm_starting=false'",
                                 scratch);
   CHECK(labelOnly.exitCode == 0);  // a label alone still runs the defaults
 }

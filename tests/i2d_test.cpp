@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "impulse2d/presets.h"
 #include "impulse2d/render/contact_sheet.h"
 #include "impulse2d/render/legend.h"
 #include "impulse2d/render/panels.h"
@@ -118,6 +119,41 @@ TEST_CASE("i2d --help and each command's --help say what it does", "[i2d][help]"
   }
   CHECK(i2d("agree --help").out.find("usage: i2d agree SCENE") == 0);
   CHECK(i2d("check --help").out.find("usage: i2d check SCENE") == 0);
+}
+
+TEST_CASE("i2d presets lists each preset on one line; --help names them", "[i2d][preset]") {
+  const Outcome outcome = i2d("presets");
+  CHECK(outcome.exitCode == 0);
+  const std::string help = i2d("--help").out;
+  size_t lines = 0;
+  for (const impulse2d::Preset& preset : impulse2d::presets()) {
+    INFO(preset.name);
+    const size_t line = outcome.out.find(preset.summary);
+    REQUIRE(line != std::string::npos);
+    const size_t lineStart = outcome.out.rfind('\n', line);
+    const size_t name = outcome.out.rfind(preset.name, line);
+    CHECK((lineStart == std::string::npos || name > lineStart));
+    CHECK(help.find(preset.name) != std::string::npos);
+    ++lines;
+  }
+  CHECK(static_cast<size_t>(std::count(outcome.out.begin(), outcome.out.end(), '\n')) == lines);
+  CHECK(i2d("run " + kScenes + "stack.toml --solver sequential --preset book").err ==
+        "error: unknown preset 'book' for solver 'sequential' (known: 'box2d_lite', 'box2d_2_4'; "
+        "see i2d presets)\n");
+}
+
+TEST_CASE("i2d check --preset --set marks each value that differs from the published method",
+          "[i2d][check][preset]") {
+  const Outcome outcome = i2d("check " + kScenes +
+                              "stack.toml --solver sequential --preset box2d_2_4 --set "
+                              "solver.velocity_iterations=20");
+  CHECK(outcome.exitCode == 0);
+  CHECK(outcome.out.find("[solver] sequential (preset box2d_2_4)") != std::string::npos);
+  CHECK(outcome.out.find("  velocity_iterations = 20  * published: 8\n") != std::string::npos);
+  CHECK(outcome.out.find("  friction_first = true\n") != std::string::npos);
+  // Without a preset, our default beside Box2D-Lite: the position pass is ours.
+  const Outcome ours = i2d("check " + kScenes + "stack.toml --solver sequential");
+  CHECK(ours.out.find("  position_iterations = 3  * published: 0\n") != std::string::npos);
 }
 
 TEST_CASE("i2d run writes the exact CSV and prints the summary", "[i2d][run][csv]") {
@@ -404,6 +440,21 @@ TEST_CASE("compare writes the solvers' frames side by side, labelled, and a shee
         std::pair<int, int>(
             2 * 800 + 3 * settings.spacing,
             600 + impulse2d::render::panelLabelHeight(settings, textSize) + 2 * settings.spacing));
+}
+
+TEST_CASE("compare --solvers SOLVER:PRESET shows a preset beside our default", "[i2d][compare]") {
+  const TemporaryDirectory directory;
+  const Outcome outcome = i2d("compare " + kScenes +
+                              "stack.toml --solvers sequential,sequential:box2d_2_4 --steps 2 "
+                              "--every 2 --frames " +
+                              (directory / ""));
+  CHECK(outcome.exitCode == 0);
+  CHECK(outcome.out.find("panel        sequential: solver sequential") != std::string::npos);
+  CHECK(outcome.out.find("panel        sequential:box2d_2_4: solver sequential") !=
+        std::string::npos);
+  CHECK(i2d("compare " + kScenes + "stack.toml --solvers micro:box2d_2_4 --frames " +
+            (directory / ""))
+            .exitCode == 2);
 }
 
 TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compare]") {

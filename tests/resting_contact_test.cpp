@@ -99,7 +99,7 @@ TEST_CASE("lowering restitution alone needs a limit above gravity's hop speed",
   // bounces are now caught within microns (taken on the closing velocity when the contact is
   // resolved); with targets fixed per step they were a three-step hop of 4.6 mm.
   MicroCollisionSettings restitutionOnly;
-  restitutionOnly.warmStart = false;
+  restitutionOnly.warmStarting = false;
   restitutionOnly.removeAccelerationVelocity = false;
   const RestFigures lowLimit = dropBox(restitutionOnly);
   report("restitution lowering only, limit 0.25 m/s", lowLimit);

@@ -159,19 +159,19 @@ TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-
   for (const std::string solver : {"micro", "sequential", "reference", "soft_step"}) {
     for (const double restitution : {0.5, 0.8}) {
       for (const double friction : {0.5, 0.0}) {
-        // Soft step's default solves a manifold's normals point by point, as Box2D v3 does (below).
-        const std::vector<std::string> settings =
-            solver == std::string("soft_step")
-                ? std::vector<std::string>{"solver.block_normals=true"}
-                : std::vector<std::string>{};
-        const FirstBounce bounce = flatBoxBounce(solver, restitution, friction, settings);
+        const FirstBounce bounce = flatBoxBounce(solver, restitution, friction, {});
         const double expected = restitution * restitution * kDropHeight;
         INFO(solver << ", e = " << restitution << ", mu = " << friction << ": apex " << bounce.apex
                     << " m, analytic " << expected << ", spin " << bounce.spin
                     << " rad/s, sideways " << bounce.slide << " m/s");
         CHECK(bounce.apex == Approx(expected).epsilon(0.03));
         CHECK(std::abs(bounce.spin) < 1e-6);
-        CHECK(std::abs(bounce.slide) < 1e-6);
+        // Soft step solves a manifold's normals point by point, as Box2D v3 does: the corner
+        // solved first stops the landing alone, and friction turns that into a slide (4.5 mm/s
+        // from 1 m at 60 Hz, whatever e; docs/soft-step.md, "Removed switches").
+        const double slideBound =
+            solver == std::string("soft_step") && friction > 0.0 ? 0.01 : 1e-6;
+        CHECK(std::abs(bounce.slide) < slideBound);
       }
     }
   }
@@ -186,12 +186,6 @@ TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-
             << " rad/s, apex " << v3.apex << " m (e^2 h = 0.64)\n";
   CHECK(v3.apex < 0.6 * 0.64);  // 0.34 m, spinning; 0.63 m with pair restitution
   CHECK(std::abs(v3.spin) > 1.0);
-  // Box2D v3's normals point by point (soft step's default): the corner solved first stops the
-  // landing alone and turns the box, and friction turns that spin into a slide.
-  const FirstBounce slid = flatBoxBounce("soft_step", 0.8, 0.5, {"solver.block_normals=false"});
-  std::cout << "figure: flat box, e = 0.8, soft step without block normals: sideways " << slid.slide
-            << " m/s\n";
-  CHECK(std::abs(slid.slide) > 1e-3);  // 7.3 mm/s; 0.24 m/s from 2 m at 60 Hz
 }
 
 // Against a wall, with no gravity to muddy the bounce: a box sliding flat into it at 3 m/s leaves

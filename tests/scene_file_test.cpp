@@ -178,19 +178,57 @@ TEST_CASE("[solver] sets the chosen solver's settings, [render] the view", "[sce
 TEST_CASE("[solver] preset = \"lecture\" turns off every refinement of the micro resolver",
           "[scene-file][solver][preset]") {
   const SceneFile scene = parseScene(std::string("[world]\nsolver = \"micro\"\n[solver]\n"
-                                                 "preset = \"lecture\"\nwarm_start = true\n") +
+                                                 "preset = \"lecture\"\nwarm_starting = true\n") +
                                          kOneBall,
                                      "lecture.toml");
   const MicroCollisionSettings& micro = scene.solverSettings.micro;
   CHECK_FALSE(micro.speculativeGaps);
   CHECK_FALSE(micro.impulseTotals);
   CHECK_FALSE(micro.severityCountsPushedPoints);
-  CHECK(micro.warmStart);                   // a key after the preset still applies
+  CHECK(micro.warmStarting);                // a key after the preset still applies
   CHECK(micro.removeAccelerationVelocity);  // the lecture's own fixes stay on
   CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\npreset = \"book\"\n" +
                 std::string(kOneBall)) ==
-        "bad.toml:4:10: unknown preset 'book' for solver 'micro' (known: 'lecture', for solver "
-        "'micro')");
+        "bad.toml:4:10: unknown preset 'book' for solver 'micro' (known: 'lecture'; i2d presets "
+        "lists all)");
+}
+
+TEST_CASE("[solver] preset = \"box2d_2_4\" sets Box2D 2.4.1's contact solver",
+          "[scene-file][solver][preset]") {
+  const SceneFile scene = parseScene(
+      std::string("[solver]\npreset = \"box2d_2_4\"\nvelocity_iterations = 10\n") + kOneBall,
+      "box2d.toml");
+  const SequentialImpulseSettings& sequential = scene.solverSettings.sequential;
+  CHECK(scene.preset == "box2d_2_4");
+  CHECK(sequential.velocityIterations == 10);  // a key after the preset still applies
+  CHECK(sequential.positionPass.iterations == 3);
+  CHECK(sequential.frictionFirst);
+  CHECK_FALSE(sequential.targets.penetrationBias);
+  CHECK_FALSE(sequential.blockPositionCorrection);
+  CHECK(errorOf("[world]\nsolver = \"reference\"\n[solver]\npreset = \"box2d_2_4\"\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:10: unknown preset 'box2d_2_4' for solver 'reference' (known: none; i2d "
+        "presets lists all)");
+}
+
+TEST_CASE("a renamed or removed solver key is refused with a hint naming what to write",
+          "[scene-file][solver][errors]") {
+  CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nwarm_start = false\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:14: 'warm_start' is now 'warm_starting', its name in every method");
+  CHECK(errorOf("[world]\nsolver = \"soft_step\"\n[solver]\nrecycle_round_normals = true\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:25: 'recycle_round_normals' is now 'renew_round_normals', with its meaning "
+        "turned so that true turns the idea on: recycle_round_normals = X is "
+        "renew_round_normals = not X");
+  CHECK(errorOf("[world]\nsolver = \"soft_step\"\n[solver]\nblock_normals = true\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:17: 'block_normals' was removed: it made results worse (docs/soft-step.md, "
+        "\"Removed switches\")");
+  // The same key of another method is that method's business: sequential never had warm_start.
+  CHECK(errorOf("[solver]\nwarm_start = false\n" + std::string(kOneBall))
+            .find("unknown key 'warm_start' in [solver] for solver 'sequential'") !=
+        std::string::npos);
 }
 
 TEST_CASE("[[stack]] and [[pyramid]] expand to touching boxes", "[scene-file][generators]") {
@@ -250,8 +288,9 @@ TEST_CASE("each kind of bad input is one error at its place", "[scene-file][erro
           "radius, vertices, position, on, offset, angle_deg, velocity, angular_velocity_deg, "
           "density, friction, restitution, force, force_rate, force_point, torque)");
     MicroCollisionSettings micro;
-    CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nwarm_starting = true\n" + ball) ==
-          "bad.toml:4:1: unknown key 'warm_starting' in [solver] for solver 'micro' (known: " +
+    CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\naccumulate_impulses = true\n" + ball) ==
+          "bad.toml:4:1: unknown key 'accumulate_impulses' in [solver] for solver 'micro' "
+          "(known: " +
               fieldNames(describe(micro)) + ", preset)");
     CHECK(errorOf("[bodies]\nx = 1\n") ==
           "bad.toml:1:2: unknown key 'bodies' in the scene file (known: world, solver, render, "

@@ -241,71 +241,6 @@ TEST_CASE("heavy on light: each point sinks by its load over m_eff·ω², the sp
   }
 }
 
-TEST_CASE("load-scaled stiffness: each point gets the spring of the mass it carries",
-          "[soft_step][spring][load_scaled]") {
-  // Two unit boxes on the ground. Each corner point of the box-box contact carries mg/2 on an
-  // effective mass m/5 (1/m_eff = 2(1/m + (½)²/I), I = m/6), each ground point mg on m/2.5: both
-  // load ratios F/(m_eff·a) are 2.5 at a = g. Off, a point sinks F/(m_eff·ω²) = 2.5 g/ω²; on, its
-  // spring is that of the mass it carries, F/a, and it sinks a/ω² (ω doubled on the ground).
-  Scene scene = stackScene("soft_step", 2, 0.6);
-  const auto sags = [&](bool loadScaled) {
-    scene.solverSettings.softStep.loadScaledStiffness = loadScaled;
-    auto world = buildWorld(scene);
-    runSteps(*world, stepsIn(3.0));
-    std::vector<std::pair<bool, double>> groundAndSag;
-    for (const Manifold& manifold : world->manifolds()) {
-      for (int i = 0; i < manifold.pointCount; ++i) {
-        groundAndSag.emplace_back(manifold.bodyA == 0 || manifold.bodyB == 0,
-                                  manifold.points[size_t(i)].penetration);
-      }
-    }
-    return groundAndSag;
-  };
-  const SoftStepSettings soft;
-  const double omega = 2.0 * kPi * soft.contactHertz;
-  const double loadRatio = 2.5 * kGravity / soft.loadAcceleration;
-  for (bool loadScaled : {false, true}) {
-    const double boxSag =
-        (loadScaled ? soft.loadAcceleration : loadRatio * kGravity) / (omega * omega);
-    const std::vector<std::pair<bool, double>> points = sags(loadScaled);
-    CHECK(points.size() == 4);
-    for (const auto& [ground, sag] : points) {
-      INFO("load scaled " << loadScaled << ", ground " << ground);
-      const double factor = ground ? soft.staticHertzFactor : 1.0;
-      CHECK(sag == Approx(boxSag / (factor * factor)).epsilon(0.03));
-    }
-  }
-}
-
-TEST_CASE("load-scaled stiffness: without the leak one sweep per substep rattles a 10-box stack",
-          "[soft_step][stack][load_scaled][stability]") {
-  // The impulse scale that lets a loaded spring sag also damps the one Gauss-Seidel sweep a
-  // substep gives each contact. Scaled by the load it nearly vanishes (a 10-box stack's bottom
-  // points carry load ratios of 12.5 and 22.5), and with 4 substeps the column rattles
-  // (docs/soft-step.md). Point by point, as Box2D v3 solves; block normals hold it still.
-  Scene scene = stackScene("soft_step", 10, 0.6);
-  const auto fastestTop = [&](bool loadScaled, bool blockNormals = false) {
-    scene.solverSettings.softStep.loadScaledStiffness = loadScaled;
-    scene.solverSettings.softStep.blockNormals.enabled = blockNormals;
-    auto world = buildWorld(scene);
-    runSteps(*world, stepsIn(2.0));
-    double fastest = 0.0;
-    for (int step = 0; step < stepsIn(8.0); ++step) {
-      world->step();
-      fastest = std::max(fastest, world->bodies().back().velocity.norm());
-    }
-    return fastest;
-  };
-  const double off = fastestTop(false);
-  const double on = fastestTop(true);
-  const double onWithBlock = fastestTop(true, true);
-  WARN("figure: 10-box stack, top's largest speed from 2 s to 10 s, point by point: off "
-       << off << " m/s, on " << on << " m/s; on with block normals " << onWithBlock << " m/s");
-  CHECK(off < 0.01);
-  CHECK(on > 0.1);
-  CHECK(onWithBlock < 0.01);
-}
-
 TEST_CASE(
     "without contact recycling a 20-box stack stands with friction in the relax solve, and "
     "leans over with friction in both solves",
@@ -313,11 +248,9 @@ TEST_CASE(
   // Friction solved while the bias pushes the overlap out works against impulses that the relax
   // solve then takes back; the column creeps sideways a little every substep and, 20 boxes
   // high, leans over within 10 s. With contact recycling (the default) the column stands
-  // either way (docs/soft-step.md). All of it point by point, as Box2D v3 solves (the default);
-  // with block normals no corner is favoured and the column stands without recycling too.
+  // either way (docs/soft-step.md). All of it point by point, as Box2D v3 solves.
   constexpr int kBoxes = 20;
   Scene scene = stackScene("soft_step", kBoxes, 0.6);
-  scene.solverSettings.softStep.blockNormals.enabled = false;
   const auto topTravel = [&] {
     auto world = buildWorld(scene);
     runSteps(*world, stepsIn(2.0));
@@ -336,12 +269,6 @@ TEST_CASE(
   CHECK(topTravel() > kLeansOver);
   scene.solverSettings.softStep.frictionInRelax = true;
   CHECK(topTravel() < kStands);
-  scene.solverSettings.softStep.frictionInRelax = false;
-  scene.solverSettings.softStep.blockNormals.enabled = true;
-  const double blockTravel = topTravel();
-  WARN("figure: 20-box stack, no recycling, friction in both solves, block normals: top moves "
-       << blockTravel << " m");
-  CHECK(blockTravel < kStands);
 }
 
 TEST_CASE(
@@ -410,10 +337,10 @@ TEST_CASE(
   // A disc on a box's corner, its normal running from the corner to its centre, moved 1 mm
   // (within every distance): found anew, since its normal has turned by 1 mm / r; kept on v3's
   // rule. The same disc on the box's face keeps its normal, and its manifold, however it moves.
-  for (const bool roundNormals : {false, true}) {
+  for (const bool renewRoundNormals : {true, false}) {
     for (const double along : {0.0, 0.5}) {  // above the face's middle, above its right corner
       Scene scene = groundScene("soft_step", 0.6);
-      scene.solverSettings.softStep.recycleRoundNormals = roundNormals;
+      scene.solverSettings.softStep.renewRoundNormals = renewRoundNormals;
       scene.bodies[0].shape = makeBox(1.0, 1.0);
       scene.bodies[0].position = Vec2(0.0, -0.5);
       BodyDef disc = lecture::diskOnSlope(0.5, 0.0, 0.6);
@@ -428,8 +355,9 @@ TEST_CASE(
       world->findContacts();
       const bool onCorner = along > 0.0;
       INFO((onCorner ? "on the corner" : "on the face")
-           << ", round normals recycled: " << roundNormals);
-      CHECK(world->lastStepStatistics().recycledManifolds == (onCorner && !roundNormals ? 0 : 1));
+           << ", round normals renewed: " << renewRoundNormals);
+      CHECK(world->lastStepStatistics().recycledManifolds ==
+            (onCorner && renewRoundNormals ? 0 : 1));
     }
   }
 }
@@ -524,14 +452,12 @@ TEST_CASE("a rolling pentagon's next vertex is found before it reaches the groun
   }
 }
 
-TEST_CASE(
-    "a 40-box stack stands 10 s with contact recycling or block normals, and buckles without both",
-    "[soft_step][stack][recycling][stability]") {
+TEST_CASE("a 40-box stack stands 10 s with contact recycling, and buckles without it",
+          "[soft_step][stack][recycling][stability]") {
   // Found anew every step, a manifold's arms turn with its boxes, and so do the Jacobians the
   // substeps solve with: a box that leans moves its contact points under its weight, and the
   // column's S-shaped mode grows about twofold every 0.6 s. Recycled, as Box2D v3 keeps them,
-  // the arms stay as they were found and the column only sways (docs/soft-step.md). That is
-  // point by point, as v3 solves (the default); with block normals it stands either way.
+  // the arms stay as they were found and the column only sways (docs/soft-step.md).
   constexpr int kBoxes = 40;
   Scene scene = stackScene("soft_step", kBoxes, 0.6);
   const auto farthestTop = [&] {
@@ -547,22 +473,14 @@ TEST_CASE(
   // 10 s, Box2D v3 3.4 cm). Falls: the top ends up more than a box width off the axis.
   constexpr double kStands = 0.2;  // m
   constexpr double kFalls = 1.0;   // m
-  scene.solverSettings.softStep.blockNormals.enabled = true;
-  const double recycledWithBlock = farthestTop();
   scene.solverSettings.softStep.contactRecycling = false;
-  const double foundAnewWithBlock = farthestTop();
-  scene.solverSettings.softStep.blockNormals.enabled = false;
   const double foundAnew = farthestTop();
   scene.solverSettings.softStep.contactRecycling = true;
   const double recycled = farthestTop();
   WARN("figure: 40-box stack, top's farthest from the axis in 10 s: recycled "
-       << recycled << " m, found anew " << foundAnew << " m, point by point; with block normals "
-       << recycledWithBlock << " m and " << foundAnewWithBlock << " m");
+       << recycled << " m, found anew " << foundAnew << " m");
   CHECK(recycled < kStands);
   CHECK(foundAnew > kFalls);
-  // Both corners of each box at once, no corner is favoured and no S-shaped mode starts.
-  CHECK(recycledWithBlock < kStands);
-  CHECK(foundAnewWithBlock < kStands);
 }
 
 TEST_CASE("a 40-box stack stands with 16 substeps of 240 Hz contacts", "[soft_step][stack]") {

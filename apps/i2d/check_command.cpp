@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "failures.h"
+#include "impulse2d/presets.h"
 #include "impulse2d/scene/scene_file.h"
 #include "scene_setup.h"
 
@@ -50,21 +51,51 @@ std::string describeShape(const Shape& shape) {
   return out.str();
 }
 
-void printSettings(const std::string& title, const std::vector<impulse2d::SettingField>& fields) {
+std::string formatValue(const impulse2d::SettingField& field) {
+  std::ostringstream out;
+  std::visit(
+      [&out](auto* value) {
+        if constexpr (std::is_same_v<decltype(value), Vec2*>) {
+          out << formatVec2(*value);
+        } else {
+          out << std::boolalpha << *value;
+        }
+      },
+      field.value);
+  return out.str();
+}
+
+/// The fields, each as `name = value`; with `published` (the same fields of the published
+/// method), a value that differs is marked with `*` and the published value.
+void printSettings(const std::string& title, const std::vector<impulse2d::SettingField>& fields,
+                   const std::vector<impulse2d::SettingField>& published = {}) {
   std::cout << title << "\n";
-  for (const impulse2d::SettingField& field : fields) {
-    std::cout << "  " << field.name << " = ";
-    std::visit(
-        [](auto* value) {
-          if constexpr (std::is_same_v<decltype(value), Vec2*>) {
-            std::cout << formatVec2(*value);
-          } else {
-            std::cout << std::boolalpha << *value;
-          }
-        },
-        field.value);
+  for (size_t i = 0; i < fields.size(); ++i) {
+    const std::string value = formatValue(fields[i]);
+    std::cout << "  " << fields[i].name << " = " << value;
+    if (i < published.size() && formatValue(published[i]) != value) {
+      std::cout << "  * published: " << formatValue(published[i]);
+    }
     std::cout << "\n";
   }
+}
+
+/// The solver's settings beside those of the method as published (presets.h).
+void printSolverSettings(impulse2d::SceneFile& scene) {
+  const std::string title = "[solver] " + scene.solver;
+  std::vector<impulse2d::SettingField> fields =
+      impulse2d::solverSettingFields(scene.solverSettings, scene.solver);
+  const impulse2d::Preset* method = impulse2d::publishedMethod(scene.solver, scene.preset);
+  if (!method) {
+    printSettings(title, fields);
+    return;
+  }
+  impulse2d::SolverSettings published;
+  method->apply(published);
+  std::cout << "* marks a value that differs from preset " << method->name << ": "
+            << method->summary << "\n";
+  printSettings(title + (scene.preset.empty() ? "" : " (preset " + scene.preset + ")"), fields,
+                impulse2d::solverSettingFields(published, scene.solver));
 }
 
 void printBodyCounts(const std::vector<BodyDef>& bodies) {
@@ -92,13 +123,12 @@ void printBody(const BodyDef& body) {
 }  // namespace
 
 int checkCommand(const CheckOptions& options) {
-  impulse2d::SceneFile scene = impulse2d::loadSceneFile(options.scenePath);
-  std::cout << "scene " << scene.name << " (" << options.scenePath << "): valid\n"
+  impulse2d::SceneFile scene = loadScene(options.scene);
+  std::cout << "scene " << scene.name << " (" << options.scene.scenePath << "): valid\n"
             << "solver " << scene.solver << ", " << scene.steps << " steps of " << scene.world.dt
             << " s = " << scene.steps * scene.world.dt << " s\n";
   printSettings("[world]", impulse2d::describe(scene.world));
-  printSettings("[solver] " + scene.solver,
-                impulse2d::solverSettingFields(scene.solverSettings, scene.solver));
+  printSolverSettings(scene);
   printBodyCounts(scene.bodies);
   for (const BodyDef& body : scene.bodies) printBody(body);
   warnAboutStartingOverlaps(scene, std::cerr);

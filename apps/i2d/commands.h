@@ -15,6 +15,9 @@ int errorVsReferenceRun(const RunOptions& options);
 /// `i2d check`: validates the scene and prints what it holds.
 int checkCommand(const CheckOptions& options);
 
+/// `i2d presets`: lists every solver's presets, one line each.
+int presetsCommand();
+
 /// `i2d compare`: runs the scene once per panel and writes the panels side by side.
 int compareCommand(const CompareOptions& options);
 

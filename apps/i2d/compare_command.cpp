@@ -31,11 +31,14 @@ struct PanelRun {
   std::vector<StepFigures> figures;
 };
 
-/// The panel's scene: the file, then --solver or the panel's solver, the common --sets, the
-/// panel's own --sets, then --steps and --dt.
+/// The panel's scene: the file, then --solver or the panel's solver (and its preset), the common
+/// --sets, the panel's own --sets, then --steps and --dt.
 SceneFile panelScene(const SceneFile& file, const SceneOptions& common, const PanelOption& panel) {
   SceneOptions options = common;
-  if (panel.solver) options.solver = panel.solver;
+  if (panel.solver) {
+    options.solver = panel.solver;
+    options.preset = panel.preset;
+  }
   options.settings.insert(options.settings.end(), panel.settings.begin(), panel.settings.end());
   SceneFile scene = file;
   applyOverrides(options, scene);

@@ -12,20 +12,30 @@ usage:
   i2d compare SCENE [options]   run the scene once per solver (--solvers) or once per set of
                                 settings (--panel) and write the runs side by side as frames
   i2d agree SCENE [options]     print how far each method strays from Box2D, as Markdown
-  i2d check SCENE               validate a scene and print what it holds
+  i2d check SCENE [options]     validate a scene and print what it holds, marking each
+                                solver setting that differs from the published method
+  i2d presets                   list the presets: each method as its authors published it
   i2d --help                    this text
   i2d COMMAND --help            the options of one command
 
 SCENE is a TOML scene file (docs/scene-format.md); demos/scenes/ holds one per lecture concept,
 and an installed i2d runs those by name: i2d run resting_box.
 The solvers are micro, sequential, soft_step, reference and box2d (Box2D 2.4, the behaviour
-reference).
+reference). Our default of a method is the published method plus refinements; a preset runs
+the method as published ([solver] preset = "NAME" in a scene, --preset NAME on the command
+line; i2d presets says what each is):
+  micro        lecture       the micro-collision resolver as the lecture states it
+  sequential   box2d_lite    Catto's Box2D-Lite
+  sequential   box2d_2_4     Box2D 2.4.1's contact solver, 8 + 3 iterations
+  soft_step    box2d_v3      Box2D v3's soft step
 
 examples:
   i2d run demos/scenes/bouncing_ball.toml --csv ball.csv
   i2d run demos/scenes/bouncing_ball.toml --frames frames --every 5
   i2d run demos/scenes/resting_box.toml --trace-step 40 --frames frames
   i2d compare demos/scenes/stack.toml --solvers micro,sequential,reference --frames frames
+  i2d compare demos/scenes/pyramid40.toml --solvers sequential,sequential:box2d_2_4 --frames f
+  i2d check demos/scenes/stack.toml --preset box2d_2_4 --set solver.velocity_iterations=20
   i2d agree demos/scenes/bouncing_ball.toml
   scripts/demos                 every lecture demo, frames and sheets under frames/
 
@@ -52,6 +62,8 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --solver NAME         run this solver instead of the scene's: micro, sequential, reference,
                         soft_step, box2d; its settings are then the defaults, change them
                         with --set
+  --preset NAME         the solver's settings as its authors published them (i2d presets),
+                        applied after --solver and before --set
   --steps N             number of steps (N >= 0) instead of [world] steps
   --dt S                time step in seconds (S > 0) instead of [world] dt
   --set SECTION.KEY=VALUE
@@ -139,7 +151,9 @@ then prints each panel's energies at the end.
 
 panels (one of the two):
   --solvers LIST        one panel per solver, labelled with its name, LIST comma-separated:
-                        micro,sequential,reference,soft_step,box2d
+                        micro,sequential,reference,soft_step,box2d; SOLVER:PRESET runs a
+                        preset: --solvers sequential,sequential:box2d_2_4 shows Box2D 2.4.1's
+                        method beside our default
   --panel 'LABEL: SECTION.KEY=VALUE; SECTION.KEY=VALUE'
                         one panel, repeatable: the scene with these --set changes, labelled
                         LABEL; the changes after ':' are separated by ';' and may be left
@@ -153,6 +167,7 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --every K             a frame every K-th step (K >= 1), plus step 0 and the last
   --steps N, --dt S     as for i2d run, for every panel
   --solver NAME         the solver of every --panel panel, instead of the scene's
+  --preset NAME         the preset of every --panel panel (i2d presets)
   --set SECTION.KEY=VALUE
                         a change for every panel, applied before the panel's own
   --video, --animation KIND, --format, --size, --theme, --no-overlays, --hide LIST,
@@ -186,14 +201,27 @@ options (a value follows the option or '=': --steps 100, --steps=100):
 exit codes: 0 success, 1 failure while running, 2 bad command line, 3 invalid scene.
 )";
 
-const char* const kCheckHelp = R"(usage: i2d check SCENE
+const char* const kCheckHelp = R"(usage: i2d check SCENE [options]
 
 Validates the scene file and prints what it holds: its solver and steps, the [world] settings
 and the chosen solver's settings with every value (defaults included), the bodies counted by
 shape and type, and each body as the engine sees it (centre of mass, angle, material).
+A solver setting that differs from the method as its authors published it is marked
+"* published: VALUE"; the method is the run's preset, or the solver's first preset
+(micro: lecture, sequential: box2d_lite, soft_step: box2d_v3).
+
+options: --solver NAME, --preset NAME, --set SECTION.KEY=VALUE, --steps N, --dt S, as for
+i2d run: the settings printed are those the run would use.
 
 exit codes: 0 valid scene, 2 bad command line, 3 invalid scene (one line on stderr:
 "error: FILE:LINE:COLUMN: what is wrong").
+)";
+
+const char* const kPresetsHelp = R"(usage: i2d presets
+
+Lists every preset, one line each: its solver, its name and what it is. A preset sets the
+solver's settings to the method as its authors published it; choose one with
+[solver] preset = "NAME" in a scene or --preset NAME on the command line.
 )";
 
 }  // namespace i2d

@@ -8,5 +8,6 @@ extern const char* const kRunHelp;
 extern const char* const kCheckHelp;
 extern const char* const kCompareHelp;
 extern const char* const kAgreeHelp;
+extern const char* const kPresetsHelp;
 
 }  // namespace i2d

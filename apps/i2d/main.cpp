@@ -45,6 +45,11 @@ int dispatch(const std::string& command, const std::vector<std::string>& argumen
     if (asksForHelp(arguments)) return printHelp(i2d::kAgreeHelp);
     return i2d::agreeCommand(i2d::parseAgreeOptions(arguments));
   }
+  if (command == "presets") {
+    if (asksForHelp(arguments)) return printHelp(i2d::kPresetsHelp);
+    if (!arguments.empty()) throw i2d::UsageError("i2d presets takes no arguments");
+    return i2d::presetsCommand();
+  }
   if (command == "--help" || command == "-h" || command == "help") {
     return printHelp(i2d::kGeneralHelp);
   }

@@ -10,6 +10,7 @@
 
 #include "failures.h"
 #include "impulse2d/box2d/box2d_simulation.h"
+#include "impulse2d/presets.h"
 #include "impulse2d/scene/setting_ranges.h"
 #include "scene_search.h"
 
@@ -138,6 +139,14 @@ std::string checkSolver(const std::string& name) {
   return name;
 }
 
+/// A preset of that solver (presets.h); a usage error naming the solver's presets otherwise.
+void checkPreset(const std::string& solver, const std::string& name) {
+  if (!impulse2d::findPreset(solver, name)) {
+    throw UsageError("unknown preset '" + name + "' for solver '" + solver +
+                     "' (known: " + impulse2d::presetNames(solver) + "; see i2d presets)");
+  }
+}
+
 /// The overlay switches by name: the snake_case names of RenderSettings::overlays.
 const std::map<std::string, bool Overlays::*>& overlayFields() {
   static const std::map<std::string, bool Overlays::*> fields = {
@@ -211,12 +220,13 @@ void parse(const std::vector<std::string>& arguments, const std::string& command
   if (scenePath.empty()) throw UsageError("i2d " + command + " needs a SCENE file");
 }
 
-/// --steps, --dt and --set; --solver too when the command runs one solver.
+/// --steps, --dt and --set; --solver and --preset too when the command runs one solver.
 void addSceneHandlers(Handlers& handlers, SceneOptions& options, bool withSolver) {
   if (withSolver) {
     handlers.options["--solver"] = [&](const std::string& value) {
       options.solver = checkSolver(value);
     };
+    handlers.options["--preset"] = [&](const std::string& value) { options.preset = value; };
   }
   handlers.options["--steps"] = [&](const std::string& value) {
     options.steps = parseInteger(value, "--steps", 0);
@@ -312,6 +322,21 @@ std::vector<std::string> parseSolverList(const std::string& value) {
   return solvers;
 }
 
+/// `--solvers` of compare: each entry SOLVER or SOLVER:PRESET, one panel each, labelled with it.
+std::vector<PanelOption> parseSolverPanels(const std::string& value) {
+  std::vector<PanelOption> panels;
+  for (const std::string& entry : splitList(value, ',', "--solvers")) {
+    const size_t colon = entry.find(':');
+    PanelOption panel{entry, checkSolver(entry.substr(0, colon)), std::nullopt, {}};
+    if (colon != std::string::npos) {
+      panel.preset = entry.substr(colon + 1);
+      checkPreset(*panel.solver, *panel.preset);
+    }
+    panels.push_back(panel);
+  }
+  return panels;
+}
+
 }  // namespace
 
 PanelOption parsePanel(const std::string& text) {
@@ -376,7 +401,9 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
 
 CheckOptions parseCheckOptions(const std::vector<std::string>& arguments) {
   CheckOptions options;
-  parse(arguments, "check", {}, options.scenePath);
+  Handlers handlers;
+  addSceneHandlers(handlers, options.scene, true);
+  parse(arguments, "check", handlers, options.scene.scenePath);
   return options;
 }
 
@@ -388,9 +415,7 @@ CompareOptions parseCompareOptions(const std::vector<std::string>& arguments) {
   bool bySolver = false;
   bool byPanel = false;
   handlers.options["--solvers"] = [&](const std::string& value) {
-    for (const std::string& solver : parseSolverList(value)) {
-      options.panels.push_back({solver, solver, {}});
-    }
+    for (const PanelOption& panel : parseSolverPanels(value)) options.panels.push_back(panel);
     bySolver = true;
   };
   handlers.options["--panel"] = [&](const std::string& value) {

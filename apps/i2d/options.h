@@ -12,10 +12,12 @@
 
 namespace i2d {
 
-/// What changes the scene before it runs: applied as --solver, each --set, --steps, --dt.
+/// What changes the scene before it runs: applied as --solver, --preset, each --set, --steps,
+/// --dt.
 struct SceneOptions {
   std::string scenePath;
   std::optional<std::string> solver;  ///< --solver: replaces the scene's solver
+  std::optional<std::string> preset;  ///< --preset: the solver's settings as published
   std::optional<int> steps;           ///< --steps: replaces [world] steps
   std::optional<double> dt;           ///< --dt: replaces [world] dt (s)
   std::vector<std::string> settings;  ///< --set section.key=value, applied in order
@@ -51,13 +53,14 @@ struct RunOptions {
 };
 
 struct CheckOptions {
-  std::string scenePath;
+  SceneOptions scene;
 };
 
 /// One panel of `i2d compare`: a label and the scene changes that make it differ.
 struct PanelOption {
   std::string label;
   std::optional<std::string> solver;  ///< from --solvers
+  std::optional<std::string> preset;  ///< from --solvers SOLVER:PRESET
   std::vector<std::string> settings;  ///< from --panel 'LABEL: section.key=value; ...'
 };
 

@@ -5,13 +5,26 @@
 
 #include "failures.h"
 #include "impulse2d/collide.h"
+#include "impulse2d/presets.h"
 #include "impulse2d/scene/scene.h"
 #include "impulse2d/scene/scene_file.h"
 
 namespace i2d {
 
 void applyOverrides(const SceneOptions& options, impulse2d::SceneFile& scene) {
-  if (options.solver) scene.solver = *options.solver;
+  if (options.solver && *options.solver != scene.solver) {
+    scene.solver = *options.solver;
+    scene.preset.clear();  // the file's preset was the other solver's
+  }
+  if (options.preset) {
+    const impulse2d::Preset* preset = impulse2d::findPreset(scene.solver, *options.preset);
+    if (!preset) {
+      throw UsageError("unknown preset '" + *options.preset + "' for solver '" + scene.solver +
+                       "' (known: " + impulse2d::presetNames(scene.solver) + "; see i2d presets)");
+    }
+    preset->apply(scene.solverSettings);
+    scene.preset = preset->name;
+  }
   for (const std::string& assignment : options.settings) impulse2d::applySetting(scene, assignment);
   if (options.steps) scene.steps = *options.steps;
   if (options.dt) scene.world.dt = *options.dt;

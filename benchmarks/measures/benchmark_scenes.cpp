@@ -1,6 +1,9 @@
 // The benchmark scenes and method settings (benchmark_scenes.h).
 #include "benchmark_scenes.h"
 
+#include <stdexcept>
+
+#include "impulse2d/presets.h"
 #include "impulse2d/scene/scene_file.h"
 
 using namespace impulse2d;
@@ -75,6 +78,15 @@ Scene withMethod(Scene scene, const std::string& solver, int iterations) {
   if (iterations > 0 && solver == "micro") {
     applySetting(scene, "solver.pass_cap_while_progressing=false");
   }
+  return scene;
+}
+
+Scene withPreset(Scene scene, const std::string& name) {
+  if (name.empty()) return scene;
+  const Preset* preset = findPreset(scene.solver, name);
+  if (!preset) throw std::invalid_argument("no preset '" + name + "' for " + scene.solver);
+  preset->apply(scene.solverSettings);
+  scene.preset = name;
   return scene;
 }
 

@@ -36,4 +36,7 @@ std::string iterationKey(const std::string& solver);
 /// micro applies at most k impulses per point.
 impulse2d::Scene withMethod(impulse2d::Scene scene, const std::string& solver, int iterations);
 
+/// The scene with its solver's settings set to the preset `name` (presets.h); empty: unchanged.
+impulse2d::Scene withPreset(impulse2d::Scene scene, const std::string& name);
+
 }  // namespace benchmarks

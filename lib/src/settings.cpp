@@ -1,6 +1,7 @@
 // The settings fields by their scene-file names.
 #include "impulse2d/settings.h"
 
+
 namespace impulse2d {
 
 std::vector<SettingField> describe(WorldSettings& s) {
@@ -22,7 +23,7 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.speculativeGaps = false;
   settings.impulseTotals = false;
   settings.severityCountsPushedPoints = false;
-  settings.warmStart = false;
+  settings.warmStarting = false;
   settings.pairImpulses = false;
   settings.pairBounces = false;
   settings.pairMoves = false;
@@ -46,7 +47,7 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
           {"speculative_gaps", &s.speculativeGaps},
           {"impulse_totals", &s.impulseTotals},
           {"severity_counts_pushed_points", &s.severityCountsPushedPoints},
-          {"warm_start", &s.warmStart},
+          {"warm_starting", &s.warmStarting},
           {"pair_impulses", &s.pairImpulses},
           {"pair_bounces", &s.pairBounces},
           {"pair_moves", &s.pairMoves},
@@ -77,6 +78,37 @@ void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
 
 }  // namespace
 
+namespace {
+
+/// m/s. A speed no contact reaches, the top of the settings' range: a cap or threshold that never
+/// acts.
+constexpr double kNoLimit = 1000.0;
+
+}  // namespace
+
+SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
+  SequentialImpulseSettings settings;
+  settings.velocityIterations = 10;
+  settings.convergedImpulseChange = 0.0;
+  settings.targets.allowedPenetration = 0.01;
+  settings.targets.maxBiasVelocity = kNoLimit;               // Box2D-Lite caps no bias
+  settings.targets.restitutionVelocityThreshold = kNoLimit;  // and has no bounce
+  settings.positionPass.iterations = 0;
+  settings.block.enabled = false;
+  settings.blockPositionCorrection = false;
+  return settings;
+}
+
+SequentialImpulseSettings SequentialImpulseSettings::box2d24() {
+  SequentialImpulseSettings settings;
+  settings.velocityIterations = 8;
+  settings.convergedImpulseChange = 0.0;
+  settings.frictionFirst = true;
+  settings.targets.penetrationBias = false;
+  settings.blockPositionCorrection = false;
+  return settings;
+}
+
 std::vector<SettingField> describe(SequentialImpulseSettings& s) {
   std::vector<SettingField> fields = {{"velocity_iterations", &s.velocityIterations},
                                       {"converged_impulse_change", &s.convergedImpulseChange},
@@ -85,7 +117,9 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);
   fields.insert(fields.end(), {{"block_solver", &s.block.enabled},
-                               {"block_condition_limit", &s.block.conditionLimit}});
+                               {"block_condition_limit", &s.block.conditionLimit},
+                               {"block_position_correction", &s.blockPositionCorrection},
+                               {"friction_first", &s.frictionFirst}});
   return fields;
 }
 
@@ -131,6 +165,18 @@ std::vector<SettingField> describe(Box2dSettings& s) {
           {"position_iterations", &s.positionIterations}};
 }
 
+SoftStepSettings SoftStepSettings::box2dV3() {
+  SoftStepSettings settings;
+  settings.roundSurfaces = false;
+  settings.recycleWithinFoundDistance = false;
+  settings.recycleInWorldFrame = false;
+  settings.renewRoundNormals = false;
+  settings.pairRestitution.enabled = false;
+  settings.frictionInRestitution = false;
+  settings.restitutionOnStepTotals = false;
+  return settings;
+}
+
 std::vector<SettingField> describe(SoftStepSettings& s) {
   return {{"substeps", &s.substeps},
           {"contact_hertz", &s.contactHertz},
@@ -138,8 +184,6 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"damping_ratio", &s.dampingRatio},
           {"static_hertz_factor", &s.staticHertzFactor},
           {"max_push_velocity", &s.maxPushVelocity},
-          {"load_scaled_stiffness", &s.loadScaledStiffness},
-          {"load_acceleration", &s.loadAcceleration},
           {"soft_contacts", &s.softContacts},
           {"relax", &s.relax},
           {"friction_in_relax", &s.frictionInRelax},
@@ -153,13 +197,11 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"recycle_in_world_frame", &s.recycleInWorldFrame},
           {"friction_in_restitution", &s.frictionInRestitution},
           {"restitution_on_step_totals", &s.restitutionOnStepTotals},
-          {"recycle_round_normals", &s.recycleRoundNormals},
+          {"renew_round_normals", &s.renewRoundNormals},
           {"restitution", &s.restitution},
           {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
           {"pair_restitution", &s.pairRestitution.enabled},
-          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit},
-          {"block_normals", &s.blockNormals.enabled},
-          {"block_normals_condition_limit", &s.blockNormals.conditionLimit}};
+          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit}};
 }
 
 }  // namespace impulse2d

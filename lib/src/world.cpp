@@ -198,13 +198,13 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
 // impulses and arms as found; only each point's overlap follows how far the bodies moved since,
 // the arms turned with them (a circle's not, with roundSurfaces), as a soft step's substeps
 // measure it. A normal that runs to a circle's centre turns as the bodies move past each other,
-// so unless the solver asks to keep such manifolds too (roundNormals, v3) they are found anew.
+// so the solver may ask to find such manifolds anew every step (renewRoundNormals; v3 keeps them).
 bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
   const ContactRecycling limits = solver_->contactRecycling();
   if (limits.distance <= 0.0 || old.pointCount == 0) return false;
   const Body& a = bodies_[size_t(old.bodyA)];
   const Body& b = bodies_[size_t(old.bodyB)];
-  if (!limits.roundNormals && normalRunsToCentre(a.shape, b.shape, old)) return false;
+  if (limits.renewRoundNormals && normalRunsToCentre(a.shape, b.shape, old)) return false;
   const double turnA = a.angle - old.found.angleA;
   const double turnB = b.angle - old.found.angleB;
   if (std::abs(turnA) > limits.largestTurn || std::abs(turnB) > limits.largestTurn) return false;

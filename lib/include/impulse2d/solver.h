@@ -81,9 +81,9 @@ struct ContactRecycling {
   /// A one-point manifold is kept only while the bodies moved less than the contact distance it
   /// was found within as well (SoftStepSettings::recycleWithinFoundDistance).
   bool withinFoundDistance = false;
-  /// A manifold whose normal runs to a circle's centre (normalRunsToCentre) is kept too
-  /// (SoftStepSettings::recycleRoundNormals); false: it is found anew every step.
-  bool roundNormals = true;
+  /// A manifold whose normal runs to a circle's centre (normalRunsToCentre) is found anew every
+  /// step (SoftStepSettings::renewRoundNormals); false: it is kept like any other, as in v3.
+  bool renewRoundNormals = false;
   /// B's movement is measured in the world's frame, where the recycled normal and arms are kept,
   /// so a pair that turns together counts as moving (SoftStepSettings::recycleInWorldFrame);
   /// false: in A's frame, as Box2D v3 measures it.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "impulse2d/presets.h"
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/scene/setting_ranges.h"
 #include "scene_tables.h"
@@ -27,17 +28,51 @@ void readSolverName(const toml::table& world, Scene& scene) {
   scene.solver = name;
 }
 
-/// `[solver] preset = "lecture"`: the micro-collision resolver as the lecture states it, every
-/// refinement of ours off (MicroCollisionSettings::lecture()); keys after it still apply.
+/// `[solver] preset = "box2d_2_4"`: the solver's settings become the published method's
+/// (presets.h); keys after it still apply.
 void readPreset(const toml::table& solver, Scene& scene) {
   const toml::node* node = solver.get("preset");
   if (!node) return;
   const std::string name = readString(*node, "preset");
-  if (scene.solver != "micro" || name != "lecture") {
+  const Preset* preset = findPreset(scene.solver, name);
+  if (!preset) {
     fail(node->source(), "unknown preset '" + name + "' for solver '" + scene.solver +
-                             "' (known: 'lecture', for solver 'micro')");
+                             "' (known: " + presetNames(scene.solver) + "; i2d presets lists all)");
   }
-  scene.solverSettings.micro = MicroCollisionSettings::lecture();
+  preset->apply(scene.solverSettings);
+  scene.preset = name;
+}
+
+/// A key a scene file may no longer use, and what to write instead.
+struct RetiredKey {
+  const char* solver;
+  const char* key;
+  const char* hint;
+};
+
+constexpr RetiredKey kRetiredKeys[] = {
+    {"micro", "warm_start", "is now 'warm_starting', its name in every method"},
+    {"soft_step", "recycle_round_normals",
+     "is now 'renew_round_normals', with its meaning turned so that true turns the idea on: "
+     "recycle_round_normals = X is renew_round_normals = not X"},
+    {"soft_step", "load_scaled_stiffness",
+     "was removed: it made results worse (docs/soft-step.md, \"Removed switches\")"},
+    {"soft_step", "load_acceleration",
+     "was removed with load_scaled_stiffness (docs/soft-step.md, \"Removed switches\")"},
+    {"soft_step", "block_normals",
+     "was removed: it made results worse (docs/soft-step.md, \"Removed switches\")"},
+    {"soft_step", "block_normals_condition_limit",
+     "was removed with block_normals (docs/soft-step.md, \"Removed switches\")"},
+};
+
+/// A renamed or removed key is one located error naming what to write instead.
+void rejectRetiredKeys(const toml::table& solver, const std::string& solverName) {
+  for (const RetiredKey& retired : kRetiredKeys) {
+    if (solverName != retired.solver) continue;
+    if (const toml::node* node = solver.get(retired.key)) {
+      fail(node->source(), "'" + std::string(retired.key) + "' " + retired.hint);
+    }
+  }
 }
 
 }  // namespace
@@ -55,6 +90,7 @@ void readWorld(const toml::table& root, Scene& scene) {
 void readSolver(const toml::table& root, Scene& scene) {
   const toml::table* solver = findTable(root, "solver");
   if (!solver) return;
+  rejectRetiredKeys(*solver, scene.solver);
   readPreset(*solver, scene);
   readSettingsTable(*solver, solverSettingFields(scene.solverSettings, scene.solver), {"preset"},
                     "[solver] for solver '" + scene.solver + "'", scene.solver);
@@ -168,12 +204,10 @@ const std::vector<RangeEntry>& rangeTable() {
       {"soft_step", "damping_ratio", closed(0.0, 1e4)},
       {"soft_step", "static_hertz_factor", aboveZero(100.0)},
       {"soft_step", "max_push_velocity", closed(0.0, 1000.0)},
-      {"soft_step", "load_acceleration", aboveZero(1e4)},
       {"soft_step", "recycle_distance", closed(0.0, 1.0)},
       {"soft_step", "recycle_largest_turn", closed(0.0, kPi)},
       {"soft_step", "restitution_velocity_threshold", closed(0.0, 1000.0)},
       {"soft_step", "pair_restitution_condition_limit", closed(1.0, 1e12)},
-      {"soft_step", "block_normals_condition_limit", closed(1.0, 1e12)},
   };
   return table;
 }

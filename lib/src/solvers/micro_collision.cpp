@@ -92,7 +92,9 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
   }
   for (PointState& state : states_) {
     state.contactVelocity = contactVelocityNow(state);
-    state.friction = carriedFriction(state, context.manifolds[state.manifold].friction);
+    Manifold& manifold = context.manifolds[state.manifold];
+    state.friction = carriedFriction(state, manifold.friction);
+    manifold.points[state.point].friction = state.friction;  // reported even if nothing is resolved
   }
   preparePairs();
   indexContactsByBody(context);
@@ -224,7 +226,7 @@ MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepCo
 // starts from zero, as does every point with warm starting off.
 Vec2 MicroCollisionSolver::warmStartTotals(const Manifold& manifold,
                                            const ContactPoint& point) const {
-  if (!settings_.warmStart || point.bounced || point.normalImpulse <= 0.0) return Vec2::Zero();
+  if (!settings_.warmStarting || point.bounced || point.normalImpulse <= 0.0) return Vec2::Zero();
   const double frictionLimit = settings_.friction ? manifold.friction * point.normalImpulse : 0.0;
   return Vec2(point.normalImpulse, std::clamp(point.tangentImpulse, -frictionLimit, frictionLimit));
 }

@@ -128,17 +128,18 @@ double SequentialImpulseSolver::solveManifold(const StepContext& context,
   std::array<PointImpulse, 2> impulses;
   PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
   BodyPair bodies = loadBodies(manifold);
+  if (settings_.frictionFirst) solveFrictions(manifold, bodies, impulses);
   if (manifold.block) {
     solveNormalsTogether(manifold, bodies, impulses);
   } else {
     for (int i = 0; i < manifold.pointCount; ++i) {
-      impulses[i] = solveNormal(manifold, points[i], bodies);
+      solveNormal(manifold, points[i], bodies, impulses[static_cast<size_t>(i)]);
     }
   }
+  if (!settings_.frictionFirst) solveFrictions(manifold, bodies, impulses);
   double largestChange = 0.0;
   for (int i = 0; i < manifold.pointCount; ++i) {
-    PointImpulse& impulse = impulses[static_cast<size_t>(i)];
-    impulse.tangentImpulse = solveFriction(manifold, points[i], bodies, impulse.normalImpulse);
+    const PointImpulse& impulse = impulses[static_cast<size_t>(i)];
     largestChange = std::max(
         {largestChange, std::abs(impulse.normalImpulse), std::abs(impulse.tangentImpulse)});
     reportPoint(context, manifold, bodies, sweep, i, impulse);
@@ -149,14 +150,22 @@ double SequentialImpulseSolver::solveManifold(const StepContext& context,
 
 // The text's step: the relative normal velocity, the change wanted to reach the target, and the
 // impulse = normal mass × that change (clamped as accumulation says).
-inline SequentialImpulseSolver::PointImpulse SequentialImpulseSolver::solveNormal(
-    const ManifoldState& manifold, PointState& point, BodyPair& bodies) {
+inline void SequentialImpulseSolver::solveNormal(const ManifoldState& manifold, PointState& point,
+                                                 BodyPair& bodies, PointImpulse& impulse) {
   const double relativeNormalVelocity = bodies.relativeNormalVelocity(point, manifold.normal);
-  PointImpulse impulse;
   impulse.desiredChange = point.targetNormalVelocity - relativeNormalVelocity;
   impulse.normalImpulse = normalImpulseChange(point, point.normalMass * impulse.desiredChange);
   bodies.applyNormalImpulse(point, manifold.normal, impulse.normalImpulse);
-  return impulse;
+}
+
+// Friction at each point of a contact, against the normal totals as they stand.
+inline void SequentialImpulseSolver::solveFrictions(const ManifoldState& manifold, BodyPair& bodies,
+                                                    std::array<PointImpulse, 2>& impulses) {
+  PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
+  for (int i = 0; i < manifold.pointCount; ++i) {
+    PointImpulse& impulse = impulses[static_cast<size_t>(i)];
+    impulse.tangentImpulse = solveFriction(manifold, points[i], bodies, impulse.normalImpulse);
+  }
 }
 
 // Both points of a flat contact at once: the new totals x solve the 2×2 complementarity problem
@@ -261,8 +270,10 @@ void SequentialImpulseSolver::reportPoint(const StepContext& context, const Mani
 }
 
 void SequentialImpulseSolver::solvePositions(const StepContext& context) {
+  BlockSolveSettings positionBlock = settings_.block;
+  positionBlock.enabled = settings_.blockPositionCorrection;
   correctPositions(context, settings_.positionPass, settings_.targets.allowedPenetration,
-                   settings_.block);
+                   positionBlock);
 }
 
 }  // namespace impulse2d

@@ -43,16 +43,11 @@ Softness rigidSoftness(double h) {
   return {1.0 / h, 1.0, 0.0};
 }
 
-Softness loadedSoftness(double hertz, double dampingRatio, double h, double loadRatio) {
-  const double scale = std::sqrt(loadRatio);
-  return makeSoftness(scale * hertz, scale * dampingRatio, h);
-}
-
 ContactRecycling SoftStepSolver::contactRecycling() const {
   if (!settings_.contactRecycling) return {};
-  return {settings_.recycleDistance,     settings_.recycleLargestTurn,
-          settings_.roundSurfaces,       settings_.recycleWithinFoundDistance,
-          settings_.recycleRoundNormals, settings_.recycleInWorldFrame};
+  return {settings_.recycleDistance,   settings_.recycleLargestTurn,
+          settings_.roundSurfaces,     settings_.recycleWithinFoundDistance,
+          settings_.renewRoundNormals, settings_.recycleInWorldFrame};
 }
 
 void SoftStepSolver::solveVelocities(const StepContext& context) {
@@ -142,7 +137,7 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
       const double kTangent = inverseMass(tangent);
       cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
       cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
-      cp.softness = pointSoftness(pairHertz, h, point, cp.normalMass);
+      cp.softness = pointSoftness(pairHertz, h);
       cp.normalImpulse = settings_.warmStarting ? point.substepNormalImpulse : 0.0;
       cp.tangentImpulse = settings_.warmStarting ? point.substepTangentImpulse : 0.0;
       cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
@@ -150,18 +145,11 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
   }
 }
 
-// The spring of a point (the rigid limit without soft contacts). With loadScaledStiffness, a
-// point that carried more than its effective mass at loadAcceleration last step gets the spring
-// of the mass it carried: its load is the last substep's impulse over the substep.
-Softness SoftStepSolver::pointSoftness(double hertz, double h, const ContactPoint& point,
-                                       double normalMass) const {
+// The spring of a point: the contact's hertz and damping, or the rigid limit without soft
+// contacts.
+Softness SoftStepSolver::pointSoftness(double hertz, double h) const {
   if (!settings_.softContacts) return rigidSoftness(h);
-  double loadRatio = 1.0;
-  if (settings_.loadScaledStiffness && normalMass > 0.0) {
-    const double load = point.substepNormalImpulse / h;
-    loadRatio = std::max(1.0, load / (normalMass * settings_.loadAcceleration));
-  }
-  return loadedSoftness(hertz, settings_.dampingRatio, h, loadRatio);
+  return makeSoftness(hertz, settings_.dampingRatio, h);
 }
 
 void SoftStepSolver::integrateVelocities() {
@@ -238,7 +226,6 @@ SoftStepSolver::NormalRow SoftStepSolver::normalRow(const Constraint& constraint
 
 void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b,
                                   bool useBias) {
-  if (solveNormalsAsBlock(constraint, a, b, useBias)) return;
   const Vec2 normal = constraint.normal;
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[size_t(i)];
@@ -251,48 +238,6 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverB
     cp.normalImpulse = total;
     cp.totalNormalImpulse += change;
     applyPairImpulse(a, b, cp.armA, cp.armB, change * normal);
-  }
-}
-
-// Both normal impulses of a two-point manifold at once (blockNormals). Point i alone would take
-// Δλᵢ = −(sᵢ/kᵢᵢ)(vᵢ + biasᵢ) − γᵢλᵢ (mass scale s, impulse scale γ); together, row i of
-// (1/sᵢ)·K(λ' − λ) + (kᵢᵢγᵢ/sᵢ)·λᵢ + v + bias ≥ 0 with λ' ≥ 0 and the two complementary, which is
-// that rule when K is diagonal, and keeps each point's spring (its sag under a load) as it is.
-// γ·Kλ in place of the diagonal leak would spring the pair on K⁻¹ instead: a box's corners then
-// sag together, 3.7 → 5.9 mm at the foot of pyramid20. False, solving nothing, for one point, with
-// the switch off, or a K too ill-conditioned to solve as a block.
-bool SoftStepSolver::solveNormalsAsBlock(Constraint& constraint, SolverBody& a, SolverBody& b,
-                                         bool useBias) {
-  if (!settings_.blockNormals.enabled || constraint.pointCount != 2) return false;
-  ConstraintPoint& p0 = constraint.points[0];
-  ConstraintPoint& p1 = constraint.points[1];
-  const Vec2& n = constraint.normal;
-  const Mat2 k = normalCouplingMatrix(a, b, n, {p0.armA, p1.armA}, {p0.armB, p1.armB});
-  if (!isWellConditioned(k, settings_.blockNormals.conditionLimit)) return false;
-  const Vec2 before(p0.normalImpulse, p1.normalImpulse);
-  Mat2 rows;
-  Vec2 q;
-  for (int i = 0; i < 2; ++i) {
-    const ConstraintPoint& cp = constraint.points[size_t(i)];
-    const NormalRow row = normalRow(constraint, cp, a, b, useBias);
-    const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(n);
-    rows.row(i) = k.row(i) / row.massScale;
-    q(i) = vn + row.bias - rows.row(i).dot(before) +
-           k(i, i) * row.impulseScale / row.massScale * before(i);
-  }
-  setPairNormalImpulses(constraint, a, b, solveTwoPointLcp(rows, q));
-  return true;
-}
-
-// Both points' accumulated normal impulses set to `after`, the change applied to the bodies.
-void SoftStepSolver::setPairNormalImpulses(Constraint& constraint, SolverBody& a, SolverBody& b,
-                                           const Vec2& after) const {
-  for (int i = 0; i < 2; ++i) {
-    ConstraintPoint& cp = constraint.points[size_t(i)];
-    const double change = after(i) - cp.normalImpulse;
-    cp.normalImpulse = after(i);
-    cp.totalNormalImpulse += change;
-    applyPairImpulse(a, b, cp.armA, cp.armB, change * constraint.normal);
   }
 }
 

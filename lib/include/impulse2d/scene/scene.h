@@ -39,6 +39,8 @@ struct Scene {
   int steps = 600;
   /// "micro", "sequential", "reference", "soft_step" or "box2d"
   std::string solver = "sequential";
+  /// The solver's preset (presets.h) its settings started from; empty: our defaults.
+  std::string preset;
   /// the [solver] table
   SolverSettings solverSettings;
   /// in the order the world indexes them

@@ -13,6 +13,7 @@
 
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/micro_collision_settings.h"
 #include "impulse2d/solvers/worst_first_queue.h"
 
 namespace impulse2d {

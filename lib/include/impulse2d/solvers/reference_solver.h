@@ -33,6 +33,7 @@
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/active_set.h"
 #include "impulse2d/solvers/lcp.h"
+#include "impulse2d/solvers/reference_solver_settings.h"
 
 namespace impulse2d {
 

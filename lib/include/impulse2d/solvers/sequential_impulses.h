@@ -16,6 +16,7 @@
 
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/sequential_impulse_settings.h"
 
 namespace impulse2d {
 
@@ -113,7 +114,10 @@ class SequentialImpulseSolver : public ContactSolver {
   void warmStart();
   bool converged() const;
   double solveManifold(const StepContext& context, const ManifoldState& manifold, int sweep);
-  PointImpulse solveNormal(const ManifoldState& manifold, PointState& point, BodyPair& bodies);
+  void solveNormal(const ManifoldState& manifold, PointState& point, BodyPair& bodies,
+                   PointImpulse& impulse);
+  void solveFrictions(const ManifoldState& manifold, BodyPair& bodies,
+                      std::array<PointImpulse, 2>& impulses);
   void solveNormalsTogether(const ManifoldState& manifold, BodyPair& bodies,
                             std::array<PointImpulse, 2>& impulses);
   double solveFriction(const ManifoldState& manifold, PointState& point, BodyPair& bodies,

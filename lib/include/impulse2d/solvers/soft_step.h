@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "impulse2d/solver.h"
+#include "impulse2d/solvers/soft_step_settings.h"
 
 namespace impulse2d {
 
@@ -29,11 +30,6 @@ struct Softness {
 Softness makeSoftness(double hertz, double dampingRatio, double h);
 /// The limit of infinite stiffness: the whole overlap is asked back in one substep.
 Softness rigidSoftness(double h);
-/// The spring of `hertz` and `dampingRatio` per unit of a mass `loadRatio` times the effective
-/// mass: stiffness and damping both loadRatio times larger, i.e. ω and ζ times √loadRatio. The
-/// bias rate ω/(2ζ + hω) stays; the mass scale rises and the impulse scale, the leak that lets a
-/// loaded spring sag, falls, so at rest the point sinks its load over loadRatio·m_eff·ω².
-Softness loadedSoftness(double hertz, double dampingRatio, double h, double loadRatio);
 
 /// Box2D v3's soft step: substeps of soft contacts, relax, restitution (docs/soft-step.md).
 class SoftStepSolver : public ContactSolver {
@@ -84,7 +80,7 @@ class SoftStepSolver : public ContactSolver {
     double totalNormalImpulse = 0.0;   ///< all normal impulse applied this step: did it touch?
     double totalTangentImpulse = 0.0;  ///< all friction impulse applied this step
     double relativeVelocity = 0.0;     ///< vn before the step, for restitution
-    Softness softness;                 ///< this point's spring, sized by the load it carried
+    Softness softness;                 ///< this point's spring
   };
   struct Constraint {
     int manifold = 0;
@@ -108,17 +104,13 @@ class SoftStepSolver : public ContactSolver {
 
   void prepareBodies(const StepContext& context, double h);
   void prepareConstraints(const StepContext& context, double h);
-  Softness pointSoftness(double hertz, double h, const ContactPoint& point,
-                         double normalMass) const;
+  Softness pointSoftness(double hertz, double h) const;
   void integrateVelocities();
   void warmStart();
   double solve(const StepContext& context, bool useBias, int substep);
   void solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b, bool useBias);
   NormalRow normalRow(const Constraint& constraint, const ConstraintPoint& cp, const SolverBody& a,
                       const SolverBody& b, bool useBias) const;
-  bool solveNormalsAsBlock(Constraint& constraint, SolverBody& a, SolverBody& b, bool useBias);
-  void setPairNormalImpulses(Constraint& constraint, SolverBody& a, SolverBody& b,
-                             const Vec2& after) const;
   void solveFriction(Constraint& constraint, SolverBody& a, SolverBody& b) const;
   void integratePositions(double h);
   void applyRestitution();

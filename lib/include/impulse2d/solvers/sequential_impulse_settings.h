@@ -1,0 +1,48 @@
+// Sequential impulses' settings (sequential_impulses.h), with their documented defaults.
+#pragma once
+
+#include "impulse2d/shared_settings.h"
+
+namespace impulse2d {
+
+/// Sequential impulses ("Explaining the rigid body solver", Box2D-Lite).
+struct SequentialImpulseSettings {
+  /// Most sweeps over all contacts per step. A stack of n boxes starting from rest needs about n
+  /// sweeps before the weight reaches the bottom within one step, and a 40-row pyramid rests only
+  /// with about 40; once a pile rests the sweeps stop after one (convergedImpulseChange).
+  /// Range: [0, 10000] (more would let one run take hours).
+  int velocityIterations = 40;
+  /// The sweeps stop once a whole sweep changed no impulse by more than this fraction of the
+  /// largest normal total: the answer has converged (at 1e-6 the figures equal full sweeps' to
+  /// three digits; docs/sequential-impulses.md). 0: always velocityIterations, the text's method.
+  /// Range: [0, 1000].
+  double convergedImpulseChange = 1e-6;
+  /// Clamp each contact's running total of impulse rather than each impulse.
+  bool accumulateImpulses = true;
+  /// Begin each step from the last step's totals, matched by feature id (needs accumulation).
+  bool warmStarting = true;
+  /// Bias and bounce targets.
+  ContactTargetSettings targets;
+  /// The position pass after integration.
+  PositionPassSettings positionPass;
+  /// The block solve of two-point contacts' velocities (it needs accumulated impulses).
+  BlockSolveSettings block;
+  /// The position pass corrects a two-point contact's corners together (true), or one corner at
+  /// a time, as Box2D 2.4's position solver does (false).
+  bool blockPositionCorrection = true;
+  /// Friction before the normal impulses in each contact's solve, as Box2D 2.4 orders them ("non
+  /// -penetration is more important than friction", so the normal has the last word in a sweep).
+  /// False: the normal first, then friction against it, as Box2D-Lite and the text do. Needs
+  /// accumulated impulses (without them friction is capped by this sweep's normal impulse).
+  bool frictionFirst = false;
+
+  /// Catto's Box2D-Lite: 10 sweeps to the end, normal then friction, Baumgarte bias 0.2 beyond a
+  /// slop of 0.01 m with no cap, no bounce, no block solve, no position pass.
+  static SequentialImpulseSettings box2dLite();
+  /// Box2D 2.4.1's b2ContactSolver: 8 sweeps to the end, friction first, the block solver, bounce
+  /// above 1 m/s and no penetration bias in the velocities; then 3 sweeps of its position solver
+  /// one point at a time (0.2 of the penetration beyond 0.005 m, at most 0.2 m).
+  static SequentialImpulseSettings box2d24();
+};
+
+}  // namespace impulse2d

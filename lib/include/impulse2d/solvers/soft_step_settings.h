@@ -1,0 +1,89 @@
+// Soft step's settings (soft_step.h), with their documented defaults.
+#pragma once
+
+#include "impulse2d/shared_settings.h"
+
+namespace impulse2d {
+
+/// Soft step (Box2D v3, Catto's Solver2D solve_soft_step; docs/soft-step.md): substeps of soft
+/// contact constraints, each a spring-damper of a set stiffness and damping, then relaxation and
+/// a restitution pass. Measurements behind each default are in docs/soft-step.md.
+struct SoftStepSettings {
+  // Box2D v3's method and constants (the preset box2d_v3 keeps these).
+
+  /// Substeps per world step, each: velocities, warm start, biased solve, positions, relax
+  /// (Box2D v3: 4). Range: [1, 1000] (more would let one run take hours).
+  int substeps = 4;
+  /// Hz. A contact's stiffness as the frequency it would ring at on its own mass (v3: 30).
+  /// Range: (0, 10000].
+  double contactHertz = 30.0;
+  /// The stiffness never exceeds this fraction of the substep rate, so several substeps resolve a
+  /// spring's period (v3: a quarter). Range: (0, 1].
+  double maxHertzPerSubstepRate = 0.25;
+  /// The contact spring's damping ratio; above 1 it creeps back without overshoot (v3: 10).
+  /// Range: [0, 10000].
+  double dampingRatio = 10.0;
+  /// Contacts with a static body are this many times stiffer in hertz, so the ground holds a
+  /// pile's weight (v3: 2). Range: (0, 100].
+  double staticHertzFactor = 2.0;
+  /// m/s. The fastest the bias pushes overlapping bodies apart (v3: 3). Range: [0, 1000].
+  double maxPushVelocity = 3.0;
+  /// Soft constraints from hertz and damping; false: the rigid limit, each substep asks the
+  /// whole overlap back.
+  bool softContacts = true;
+  /// A second solve without bias after the positions moved, taking back the velocity the bias
+  /// added (v3's relax); false: the body overshoots.
+  bool relax = true;
+  /// Friction in the relax solve only, against the impulses left once the bias is gone (v3 since
+  /// 2025); false: in both solves (Solver2D, v3.0).
+  bool frictionInRelax = true;
+  /// Each step starts from the last step's impulses (by feature id), each substep from the last
+  /// substep's; false: from zero.
+  bool warmStarting = true;
+  /// Speculative contacts whatever the world says, as v3 always has them, so a falling body is
+  /// stopped at the surface instead of found overlapping (or tunnelling).
+  bool speculativeContacts = true;
+  /// Contact recycling: a manifold is kept, normal and arms as found, while the bodies move
+  /// little (v3's default), so a leaning box's Jacobians do not turn and a 40-box stack stands.
+  bool contactRecycling = true;
+  /// m. A manifold is found anew once B has moved this far relative to A, counting the turn at
+  /// the farther-reaching body's extent (v3: 10 × its 0.005 m slop). Range: [0, 1].
+  double recycleDistance = 0.05;
+  /// rad. ...or once either body has turned this far (v3: cosine above 0.98). Range: [0, π].
+  double recycleLargestTurn = 0.2;
+  /// A restitution pass after the substeps: a closing contact leaves at −e times its closing
+  /// speed before the step (v3's b2ApplyRestitution); false: soft contacts do not bounce.
+  bool restitution = true;
+  /// m/s. Below this closing speed a contact does not bounce (v3: 1). Range: [0, 1000].
+  double restitutionVelocityThreshold = 1.0;
+
+  // Ours beyond Box2D v3: each true turns a refinement on; the failure each fixes and its test
+  // are in docs/soft-step.md, "The published method".
+
+  /// Round surfaces: a circle's contact follows its centre, not its turning arm, and a contact
+  /// found across a gap acts where the circle will touch.
+  bool roundSurfaces = true;
+  /// A one-point manifold is also found anew once the bodies moved as far as the contact
+  /// distance it was found within, so a pivoting polygon's next vertex is not missed.
+  bool recycleWithinFoundDistance = true;
+  /// The recycle distance is measured in the world's frame, where the kept normal and arms live,
+  /// so a pair turning together counts as moving.
+  bool recycleInWorldFrame = true;
+  /// A manifold whose normal runs to a circle's centre is found anew every step, since that
+  /// normal turns as the bodies move past each other.
+  bool renewRoundNormals = true;
+  /// A two-point manifold whose points both bounce gets its restitution impulses as one exact
+  /// 2×2 block (two_point_block.h), so a flat box leaves straight up.
+  BlockSolveSettings pairRestitution;
+  /// One friction solve after a bounce, bounded by μ times the normal impulse with the bounce in
+  /// it (Newton's and Coulomb's laws together).
+  bool frictionInRestitution = true;
+  /// A bounce may take back what any substep pushed at its point (the step's total stays ≥ 0),
+  /// not only the last substep's, so an elastic corner impact gains no energy.
+  bool restitutionOnStepTotals = true;
+
+  /// Box2D v3's soft step as published: every refinement marked "ours beyond Box2D v3" off.
+  static SoftStepSettings box2dV3();
+};
+
+}  // namespace impulse2d
