@@ -1,7 +1,6 @@
 // The settings fields by their scene-file names.
 #include "impulse2d/settings.h"
 
-
 namespace impulse2d {
 
 std::vector<SettingField> describe(WorldSettings& s) {
