@@ -163,8 +163,8 @@ void catalogueScene(const StressScene& stress, const Options& options) {
   const Knob& knob = stress.knob;
   table << "**Knob:** " << knob.name << (knob.unit.empty() ? "" : " (" + knob.unit + ")")
         << ", searched from " << formatKnob(knob, knob.easy) << " to "
-        << formatKnob(knob, knob.hard) << ". **Fails when** the " << stress.criterion.measure
-        << " exceeds " << formatNumber(stress.criterion.limit) << ". **By eye:** "
+        << formatKnob(knob, knob.hard) << ".\n**Fails when** the " << stress.criterion.measure
+        << " exceeds " << formatNumber(stress.criterion.limit) << ".\n**By eye:** "
         << stress.criterion.byEye << ".\n\n";
   for (const Intervention& intervention : stress.interventions) {
     table << "**Mid-run:** at step " << intervention.step << ", " << intervention.description

@@ -92,7 +92,9 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
   }
   for (PointState& state : states_) {
     state.contactVelocity = contactVelocityNow(state);
-    state.friction = carriedFriction(state, context.manifolds[state.manifold].friction);
+    Manifold& manifold = context.manifolds[state.manifold];
+    state.friction = carriedFriction(state, manifold.friction);
+    manifold.points[state.point].friction = state.friction;  // reported even if nothing is resolved
   }
   preparePairs();
   indexContactsByBody(context);

@@ -27,8 +27,8 @@ std::string comparePrefix(const std::string& scene);
 class FrameWriter {
  public:
   /// Frames go to root/scene/. Creates root (whose parent must exist) and root/scene, removes
-  /// frames of an earlier run with the same prefix (so ffmpeg sees only this run), and checks the
-  /// directory is writable. Throws one RenderError naming the path when it is not.
+  /// frames of an earlier run with the same prefix (so ffmpeg sees only the frames written now),
+  /// and checks the directory is writable. Throws one RenderError naming the path when it is not.
   FrameWriter(const std::filesystem::path& root, const std::string& scene, int every = 1,
               const std::string& prefix = "", const RenderSettings& settings = {},
               ImageFormat format = ImageFormat::Png);

@@ -4,7 +4,7 @@
 // answered with the impulse per unit of velocity change; friction is the same question along the
 // tangent, capped at μ times the normal impulse.
 //
-// For speed (issue 15) the sweeps touch only what they need, laid out contiguously: a solver body
+// For speed the sweeps touch only what they need, laid out contiguously: a solver body
 // per body (velocity, angular velocity, inverse mass and inertia) and a constraint per contact
 // point (arms, masses, target, running totals), all computed once per step before the sweeps and
 // written back to the bodies and manifolds after them. The buffers are reused, so a step
