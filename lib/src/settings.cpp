@@ -167,6 +167,7 @@ std::vector<SettingField> describe(Box2dSettings& s) {
 SoftStepSettings SoftStepSettings::box2dV3() {
   SoftStepSettings settings;
   settings.roundSurfaces = false;
+  settings.speculativeAtTouch = false;
   settings.recycleWithinFoundDistance = false;
   settings.recycleInWorldFrame = false;
   settings.renewRoundNormals = false;
@@ -190,6 +191,7 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"speculative_contacts", &s.speculativeContacts},
           {"contact_recycling", &s.contactRecycling},
           {"round_surfaces", &s.roundSurfaces},
+          {"speculative_at_touch", &s.speculativeAtTouch},
           {"recycle_distance", &s.recycleDistance},
           {"recycle_largest_turn", &s.recycleLargestTurn},
           {"recycle_within_found_distance", &s.recycleWithinFoundDistance},

@@ -35,7 +35,7 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   queueKeys_.clear();
   for (const PointState& state : states_) queueKeys_.push_back(severity(state));
   queue_.reset(queueKeys_, settings_.velocityEpsilon);
-  const int points = int(states_.size());
+  const int points = static_cast<int>(states_.size());
   const int cap = settings_.velocityIterationsPerContact * points;
   const int limit = settings_.passCapWhileProgressing
                         ? std::max(cap, settings_.velocityIterationsPerContactLimit * points)
@@ -71,7 +71,7 @@ void MicroCollisionSolver::recordRound() {
 // Gauss–Seidel's slow tail, where the impulses left would buy little. A span of no rounds never
 // shows progress.
 bool MicroCollisionSolver::stillProgressing() const {
-  const int rounds = int(waitingTotals_.size());
+  const int rounds = static_cast<int>(waitingTotals_.size());
   const int span = settings_.progressRounds;
   if (!settings_.passCapWhileProgressing || span < 1 || rounds <= span) return false;
   const double before = waitingTotals_[rounds - 1 - span];
@@ -82,7 +82,7 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
   dt_ = context.dt;
   loadSolverBodies(context);
   states_.clear();
-  for (int m = 0; m < int(context.manifolds.size()); ++m) {
+  for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     Manifold& manifold = context.manifolds[m];
     context.bodies[manifold.bodyA].wake();  // a contact's impulses wake its bodies
     context.bodies[manifold.bodyB].wake();
@@ -105,9 +105,9 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
 void MicroCollisionSolver::preparePairs() {
   pairs_.clear();
   if (!settings_.pairImpulses || !settings_.impulseTotals) return;
-  for (int first = 0; first + 1 < int(states_.size()); ++first) {
+  for (int first = 0; first + 1 < static_cast<int>(states_.size()); ++first) {
     if (otherPoint(first) != first + 1) continue;
-    states_[first].pair = states_[first + 1].pair = int(pairs_.size());
+    states_[first].pair = states_[first + 1].pair = static_cast<int>(pairs_.size());
     pairs_.push_back({first, PointPair::Status::NotInverted, Eigen::Matrix3d::Zero(),
                       Eigen::Matrix3d::Zero(), Eigen::Matrix2d::Zero()});
   }
@@ -134,9 +134,8 @@ void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
   Eigen::Matrix3d k;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      k(i, j) = (a.inverseMass + b.inverseMass) * direction[i].dot(direction[j]) +
-                a.inverseInertia * cross(armA[i], direction[i]) * cross(armA[j], direction[j]) +
-                b.inverseInertia * cross(armB[i], direction[i]) * cross(armB[j], direction[j]);
+      k(i, j) = couplingPerUnitImpulse(a, b, armA[i], armB[i], direction[i], armA[j], armB[j],
+                                       direction[j]);
     }
   }
   // Hadamard's ratio: det K against the product of its diagonal (1 for a diagonal K).
@@ -154,15 +153,11 @@ void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
 // The velocity phase works on copies of what its impulses touch, one per body (static bodies
 // have zero inverse mass and inertia); positions do not move until the penetration phase.
 void MicroCollisionSolver::loadSolverBodies(const StepContext& context) {
-  solverBodies_.resize(context.bodies.size());
-  for (size_t i = 0; i < context.bodies.size(); ++i) {
-    const Body& body = context.bodies[i];
-    solverBodies_[i] = {body.velocity, body.angularVelocity, body.inverseMass, body.inverseInertia};
-  }
+  impulse2d::loadSolverBodies(context.bodies, solverBodies_);
 }
 
 void MicroCollisionSolver::storeVelocities(const StepContext& context) const {
-  for (size_t i = 0; i < context.bodies.size(); ++i) storeVelocity(context, int(i));
+  for (size_t i = 0; i < context.bodies.size(); ++i) storeVelocity(context, static_cast<int>(i));
 }
 
 void MicroCollisionSolver::storeVelocity(const StepContext& context, int body) const {
@@ -251,7 +246,7 @@ FrictionState MicroCollisionSolver::carriedFriction(const PointState& state,
 // Lists, for every body, the contact points it takes part in (compressed rows), so an impulse
 // updates only the contacts that share a body with it.
 void MicroCollisionSolver::indexContactsByBody(const StepContext& context) {
-  const int bodyCount = int(context.bodies.size());
+  const int bodyCount = static_cast<int>(context.bodies.size());
   contactsOfBodyStart_.assign(bodyCount + 1, 0);
   for (const PointState& state : states_) {
     const Manifold& manifold = context.manifolds[state.manifold];
@@ -261,7 +256,7 @@ void MicroCollisionSolver::indexContactsByBody(const StepContext& context) {
   for (int i = 0; i < bodyCount; ++i) contactsOfBodyStart_[i + 1] += contactsOfBodyStart_[i];
   contactsOfBody_.resize(contactsOfBodyStart_[bodyCount]);
   std::vector<int>& next = contactsOfBodyStart_;
-  for (int s = 0; s < int(states_.size()); ++s) {
+  for (int s = 0; s < static_cast<int>(states_.size()); ++s) {
     const Manifold& manifold = context.manifolds[states_[s].manifold];
     contactsOfBody_[next[manifold.bodyA]++] = s;
     contactsOfBody_[next[manifold.bodyB]++] = s;
@@ -574,7 +569,8 @@ void MicroCollisionSolver::solvePositions(const StepContext& context) {
     queueKeys_.push_back(point.penetration);
   }
   queue_.reset(queueKeys_, settings_.positionEpsilon);
-  const int maxIterations = settings_.positionIterationsPerContact * int(states_.size());
+  const int maxIterations =
+      settings_.positionIterationsPerContact * static_cast<int>(states_.size());
   for (int iteration = 0; iteration < maxIterations; ++iteration) {
     const int worst = worstPenetration();
     if (worst < 0) break;
@@ -602,7 +598,7 @@ void MicroCollisionSolver::loadPoses(const StepContext& context) {
 }
 
 void MicroCollisionSolver::storePoses(const StepContext& context) {
-  for (size_t i = 0; i < context.bodies.size(); ++i) storePose(context, int(i));
+  for (size_t i = 0; i < context.bodies.size(); ++i) storePose(context, static_cast<int>(i));
 }
 
 void MicroCollisionSolver::storePose(const StepContext& context, int body) {
@@ -666,7 +662,8 @@ Vec2 MicroCollisionSolver::contactPointNow(const MovePoint& point, const Vec2& n
 int MicroCollisionSolver::otherPoint(int index) const {
   const int manifold = states_[index].manifold;
   for (const int other : {index - 1, index + 1}) {
-    if (other >= 0 && other < int(states_.size()) && states_[other].manifold == manifold) {
+    if (other >= 0 && other < static_cast<int>(states_.size()) &&
+        states_[other].manifold == manifold) {
       return other;
     }
   }
@@ -685,20 +682,18 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
   Pose& a = poses_[points[0]->bodyA];
   Pose& b = poses_[points[0]->bodyB];
   const Vec2 normal = points[0]->normal;
+  std::array<Vec2, 2> armA;
+  std::array<Vec2, 2> armB;
   std::array<double, 2> torqueArmA{};
   std::array<double, 2> torqueArmB{};
   for (int i = 0; i < 2; ++i) {
     const Vec2 point = contactPointNow(*points[i], normal);
-    torqueArmA[i] = cross(Vec2(point - a.position), normal);
-    torqueArmB[i] = cross(Vec2(point - b.position), normal);
+    armA[i] = point - a.position;
+    armB[i] = point - b.position;
+    torqueArmA[i] = cross(armA[i], normal);
+    torqueArmB[i] = cross(armB[i], normal);
   }
-  Mat2 k;
-  for (int i = 0; i < 2; ++i) {
-    for (int j = 0; j < 2; ++j) {
-      k(i, j) = a.inverseMass + b.inverseMass + a.inverseInertia * torqueArmA[i] * torqueArmA[j] +
-                b.inverseInertia * torqueArmB[i] * torqueArmB[j];
-    }
-  }
+  const Mat2 k = normalCouplingMatrix(a, b, normal, armA, armB);
   if (!isWellConditioned(k, settings_.pairConditionLimit)) return false;
   const Vec2 x = solveTwoPointLcp(k, Vec2(-points[0]->penetration, -points[1]->penetration));
   const double turnA = -a.inverseInertia * (torqueArmA[0] * x(0) + torqueArmA[1] * x(1));

@@ -75,11 +75,7 @@ void SequentialImpulseSolver::prepare(const StepContext& context) {
 // The solver bodies: copies of what the sweeps touch, one per body (static ones have zero
 // inverse mass and inertia, so impulses leave them still).
 void SequentialImpulseSolver::prepareBodies(const StepContext& context) {
-  solverBodies_.resize(context.bodies.size());
-  for (size_t i = 0; i < context.bodies.size(); ++i) {
-    const Body& body = context.bodies[i];
-    solverBodies_[i] = {body.velocity, body.angularVelocity, body.inverseMass, body.inverseInertia};
-  }
+  loadSolverBodies(context.bodies, solverBodies_);
 }
 
 // The block solve needs running totals to clamp, so it goes with accumulated impulses.

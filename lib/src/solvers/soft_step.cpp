@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
+#include "impulse2d/collide.h"
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/two_point_block.h"
 
@@ -26,6 +28,42 @@ Vec2 towardsTouchingPoint(const Shape& a, const Shape& b, double separation, con
   const double shareOfA =
       circleA && circleB ? a.radius / (a.radius + b.radius) : (circleB ? 1.0 : 0.0);
   return separation * (shareOfA - 0.5) * normal;
+}
+
+/// A round feature of a contact: a circle's centre and radius, or a polygon's vertex (radius 0),
+/// and how fast it moves.
+struct RoundFeature {
+  Vec2 centre;
+  Vec2 velocity;
+  double radius;
+};
+
+RoundFeature roundFeature(const Body& body, const Vec2& anchor, const Vec2& velocity,
+                          double angularVelocity) {
+  if (body.shape.type == ShapeType::Circle) return {body.position, velocity, body.shape.radius};
+  const Vec2 vertex = body.toWorld(anchor);
+  return {vertex, velocity + cross(angularVelocity, Vec2(vertex - body.position)), 0.0};
+}
+
+/// The normal from A to B when two round features closing across a gap first touch within the
+/// time `reach`, moving at constant velocity; if they do not, when they come closest within it (the
+/// separation along it stays positive, and the contact asks nothing). Empty for features already
+/// overlapping or moving apart.
+std::optional<Vec2> touchingNormal(const RoundFeature& a, const RoundFeature& b, double reach) {
+  const Vec2 between = b.centre - a.centre;
+  const Vec2 closing = b.velocity - a.velocity;
+  const double touching = a.radius + b.radius;
+  const double c = between.squaredNorm() - touching * touching;
+  const double half = between.dot(closing);
+  const double speedSquared = closing.squaredNorm();
+  if (c <= 0.0 || half >= 0.0) return std::nullopt;
+  const double discriminant = half * half - speedSquared * c;
+  double t = std::min(-half / speedSquared, reach);
+  if (discriminant >= 0.0) t = std::min(c / (std::sqrt(discriminant) - half), t);
+  const Vec2 atTouch = between + t * closing;
+  const double distance = atTouch.norm();
+  if (distance <= 0.0) return std::nullopt;
+  return Vec2(atTouch / distance);
 }
 
 }  // namespace
@@ -73,11 +111,11 @@ void SoftStepSolver::solveVelocities(const StepContext& context) {
 // Only awake dynamic bodies move: the others get zero inverse mass, so the contact pushes them
 // not at all, and zero velocity.
 void SoftStepSolver::prepareBodies(const StepContext& context, double h) {
-  bodies_.assign(context.bodies.size(), SolverBody{});
+  bodies_.assign(context.bodies.size(), SubstepBody{});
   for (size_t i = 0; i < context.bodies.size(); ++i) {
     const Body& body = context.bodies[i];
     if (!body.isAwake()) continue;
-    SolverBody& solverBody = bodies_[i];
+    SubstepBody& solverBody = bodies_[i];
     solverBody.velocity = body.velocity;
     solverBody.angularVelocity = body.angularVelocity;
     solverBody.inverseMass = body.inverseMass;
@@ -100,48 +138,88 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     const Manifold& manifold = context.manifolds[m];
     Constraint& constraint = constraints_[m];
     constraint = Constraint{};
-    constraint.manifold = int(m);
+    constraint.manifold = static_cast<int>(m);
     constraint.bodyA = manifold.bodyA;
     constraint.bodyB = manifold.bodyB;
     constraint.normal = manifold.normal;
     constraint.friction = manifold.friction;
     constraint.restitution = manifold.restitution;
     constraint.pointCount = manifold.pointCount;
-    const Body& bodyA = context.bodies[size_t(manifold.bodyA)];
-    const Body& bodyB = context.bodies[size_t(manifold.bodyB)];
+    const Body& bodyA = context.bodies[static_cast<size_t>(manifold.bodyA)];
+    const Body& bodyB = context.bodies[static_cast<size_t>(manifold.bodyB)];
     constraint.turnArmA = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyA.shape);
     constraint.turnArmB = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyB.shape);
     const double pairHertz =
         bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
-    const SolverBody& a = bodies_[size_t(manifold.bodyA)];
-    const SolverBody& b = bodies_[size_t(manifold.bodyB)];
-    const Vec2 normal = manifold.normal;
-    const Vec2 tangent = manifold.tangent();
     for (int i = 0; i < manifold.pointCount; ++i) {
-      const ContactPoint& point = manifold.points[size_t(i)];
-      ConstraintPoint& cp = constraint.points[size_t(i)];
-      const Vec2 shift =
-          settings_.roundSurfaces
-              ? towardsTouchingPoint(bodyA.shape, bodyB.shape, -point.foundPenetration, normal)
-              : Vec2::Zero();
-      cp.armA = point.foundArmA + shift;
-      cp.armB = point.foundArmB + shift;
-      cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(normal);
-      const auto inverseMass = [&](const Vec2& d) {
-        const double rA = cross(cp.armA, d);
-        const double rB = cross(cp.armB, d);
-        return a.inverseMass + b.inverseMass + a.inverseInertia * rA * rA +
-               b.inverseInertia * rB * rB;
-      };
-      const double kNormal = inverseMass(normal);
-      const double kTangent = inverseMass(tangent);
-      cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
-      cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
+      ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+      placePoint(manifold, manifold.points[static_cast<size_t>(i)], bodyA, bodyB, cp);
       cp.softness = pointSoftness(pairHertz, h);
-      cp.normalImpulse = settings_.warmStarting ? point.substepNormalImpulse : 0.0;
-      cp.tangentImpulse = settings_.warmStarting ? point.substepTangentImpulse : 0.0;
-      cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
     }
+    if (settings_.speculativeAtTouch) placeAtTouch(context, constraint);
+    prepareMasses(constraint);
+  }
+}
+
+// A point's arms and separation base as found (with roundSurfaces, moved along the normal to
+// where a circle will touch), and its impulses to warm start from.
+void SoftStepSolver::placePoint(const Manifold& manifold, const ContactPoint& point,
+                                const Body& bodyA, const Body& bodyB, ConstraintPoint& cp) const {
+  const Vec2 shift =
+      settings_.roundSurfaces
+          ? towardsTouchingPoint(bodyA.shape, bodyB.shape, -point.foundPenetration, manifold.normal)
+          : Vec2::Zero();
+  cp.armA = point.foundArmA + shift;
+  cp.armB = point.foundArmB + shift;
+  cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(manifold.normal);
+  cp.normalImpulse = settings_.warmStarting ? point.substepNormalImpulse : 0.0;
+  cp.tangentImpulse = settings_.warmStarting ? point.substepTangentImpulse : 0.0;
+}
+
+// A speculative contact between round surfaces (speculativeAtTouch) is turned to where the two
+// will touch within the step and one substep more (the last relax solve keeps a gap from closing
+// within the next substep), each moving at its mean velocity over the step: the normal then runs
+// between the two features, each arm reaches the touching point, and the separation base is the
+// gap now along that normal, which the solver closes as the bodies reach it.
+void SoftStepSolver::placeAtTouch(const StepContext& context, Constraint& constraint) const {
+  const Manifold& manifold = context.manifolds[static_cast<size_t>(constraint.manifold)];
+  const Body& bodyA = context.bodies[static_cast<size_t>(manifold.bodyA)];
+  const Body& bodyB = context.bodies[static_cast<size_t>(manifold.bodyB)];
+  if (manifold.pointCount != 1 || !normalRunsToCentre(bodyA.shape, bodyB.shape, manifold)) return;
+  const SubstepBody& a = bodies_[static_cast<size_t>(manifold.bodyA)];
+  const SubstepBody& b = bodies_[static_cast<size_t>(manifold.bodyB)];
+  const double halfSteps = 0.5 * settings_.substeps;
+  const ContactPoint& point = manifold.points[0];
+  const RoundFeature featureA = roundFeature(
+      bodyA, point.anchorA, Vec2(a.velocity + halfSteps * a.velocityPerSubstep), a.angularVelocity);
+  const RoundFeature featureB = roundFeature(
+      bodyB, point.anchorB, Vec2(b.velocity + halfSteps * b.velocityPerSubstep), b.angularVelocity);
+  const double reach = context.dt + 1.0 / inverseSubstep_;
+  const std::optional<Vec2> normal = touchingNormal(featureA, featureB, reach);
+  if (!normal) return;
+  ConstraintPoint& cp = constraint.points[0];
+  const Vec2 onA = featureA.centre + featureA.radius * *normal;
+  const Vec2 onB = featureB.centre - featureB.radius * *normal;
+  cp.armA = onA - bodyA.position;
+  cp.armB = onB - bodyB.position;
+  cp.baseSeparation = (onB - onA).dot(*normal) - (cp.armB - cp.armA).dot(*normal);
+  constraint.normal = *normal;
+  constraint.atTouch = true;
+}
+
+// Each point's normal and tangent masses and its closing velocity before the step.
+void SoftStepSolver::prepareMasses(Constraint& constraint) const {
+  const SubstepBody& a = bodies_[static_cast<size_t>(constraint.bodyA)];
+  const SubstepBody& b = bodies_[static_cast<size_t>(constraint.bodyB)];
+  const Vec2 normal = constraint.normal;
+  const Vec2 tangent = leftPerpendicular(normal);
+  for (int i = 0; i < constraint.pointCount; ++i) {
+    ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+    const double kNormal = inverseEffectiveMass(a, b, cp.armA, cp.armB, normal);
+    const double kTangent = inverseEffectiveMass(a, b, cp.armA, cp.armB, tangent);
+    cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
+    cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
+    cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
   }
 }
 
@@ -153,7 +231,7 @@ Softness SoftStepSolver::pointSoftness(double hertz, double h) const {
 }
 
 void SoftStepSolver::integrateVelocities() {
-  for (SolverBody& body : bodies_) {
+  for (SubstepBody& body : bodies_) {
     body.velocity += body.velocityPerSubstep;
     body.angularVelocity += body.angularVelocityPerSubstep;
   }
@@ -162,11 +240,11 @@ void SoftStepSolver::integrateVelocities() {
 // The last substep's impulses applied up front; off, each substep starts from zero.
 void SoftStepSolver::warmStart() {
   for (Constraint& constraint : constraints_) {
-    SolverBody& a = bodies_[size_t(constraint.bodyA)];
-    SolverBody& b = bodies_[size_t(constraint.bodyB)];
+    SubstepBody& a = bodies_[static_cast<size_t>(constraint.bodyA)];
+    SubstepBody& b = bodies_[static_cast<size_t>(constraint.bodyB)];
     const Vec2 tangent = leftPerpendicular(constraint.normal);
     for (int i = 0; i < constraint.pointCount; ++i) {
-      ConstraintPoint& cp = constraint.points[size_t(i)];
+      ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
       if (!settings_.warmStarting) {
         cp.normalImpulse = 0.0;
         cp.tangentImpulse = 0.0;
@@ -188,15 +266,15 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
   const bool frictionInRelax = settings_.frictionInRelax && settings_.relax;
   double largestChange = 0.0;
   for (Constraint& constraint : constraints_) {
-    SolverBody& a = bodies_[size_t(constraint.bodyA)];
-    SolverBody& b = bodies_[size_t(constraint.bodyB)];
+    SubstepBody& a = bodies_[static_cast<size_t>(constraint.bodyA)];
+    SubstepBody& b = bodies_[static_cast<size_t>(constraint.bodyB)];
     std::array<double, 2> before = {constraint.points[0].normalImpulse,
                                     constraint.points[1].normalImpulse};
     solveNormals(constraint, a, b, useBias);
     if (!useBias || !frictionInRelax) solveFriction(constraint, a, b);
     for (int i = 0; i < constraint.pointCount; ++i) {
-      const ConstraintPoint& cp = constraint.points[size_t(i)];
-      const double change = cp.normalImpulse - before[size_t(i)];
+      const ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+      const double change = cp.normalImpulse - before[static_cast<size_t>(i)];
       largestChange = std::max(largestChange, std::abs(change));
       if (context.observer && useBias) {
         context.report({SolverEvent::Phase::Velocity, substep, constraint.manifold, i, 0.0, change,
@@ -212,8 +290,8 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
 // (s > 0) may close within the substep and no further; an overlap is pushed out at the soft bias
 // rate, never faster than maxPushVelocity.
 SoftStepSolver::NormalRow SoftStepSolver::normalRow(const Constraint& constraint,
-                                                    const ConstraintPoint& cp, const SolverBody& a,
-                                                    const SolverBody& b, bool useBias) const {
+                                                    const ConstraintPoint& cp, const SubstepBody& a,
+                                                    const SubstepBody& b, bool useBias) const {
   const Vec2 armA = constraint.turnArmA ? rotate(a.deltaCos, a.deltaSin, cp.armA) : cp.armA;
   const Vec2 armB = constraint.turnArmB ? rotate(b.deltaCos, b.deltaSin, cp.armB) : cp.armB;
   const Vec2 anchorsMoved = b.deltaPosition - a.deltaPosition + armB - armA;
@@ -224,11 +302,11 @@ SoftStepSolver::NormalRow SoftStepSolver::normalRow(const Constraint& constraint
   return {std::max(soft.biasRate * separation, -pushVelocity_), soft.massScale, soft.impulseScale};
 }
 
-void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b,
+void SoftStepSolver::solveNormals(Constraint& constraint, SubstepBody& a, SubstepBody& b,
                                   bool useBias) {
   const Vec2 normal = constraint.normal;
   for (int i = 0; i < constraint.pointCount; ++i) {
-    ConstraintPoint& cp = constraint.points[size_t(i)];
+    ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
     const NormalRow row = normalRow(constraint, cp, a, b, useBias);
     const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
     const double impulse =
@@ -242,10 +320,10 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SolverBody& a, SolverB
 }
 
 // Coulomb friction on each point's running total, bounded by μ times its normal impulse.
-void SoftStepSolver::solveFriction(Constraint& constraint, SolverBody& a, SolverBody& b) const {
+void SoftStepSolver::solveFriction(Constraint& constraint, SubstepBody& a, SubstepBody& b) const {
   const Vec2 tangent = leftPerpendicular(constraint.normal);
   for (int i = 0; i < constraint.pointCount; ++i) {
-    ConstraintPoint& cp = constraint.points[size_t(i)];
+    ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
     const double vt = relativeVelocity(a, b, cp.armA, cp.armB).dot(tangent);
     const double limit = constraint.friction * cp.normalImpulse;
     const double total = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
@@ -259,7 +337,7 @@ void SoftStepSolver::solveFriction(Constraint& constraint, SolverBody& a, Solver
 // x += v·h; the rotation since the step began is kept as cosine and sine and turned by ω·h
 // without trigonometry (then renormalised), as Box2D v3 does.
 void SoftStepSolver::integratePositions(double h) {
-  for (SolverBody& body : bodies_) {
+  for (SubstepBody& body : bodies_) {
     if (body.inverseMass == 0.0 && body.inverseInertia == 0.0) continue;
     body.deltaPosition += h * body.velocity;
     const double turn = h * body.angularVelocity;
@@ -287,8 +365,8 @@ bool SoftStepSolver::bounces(const ConstraintPoint& cp) const {
 void SoftStepSolver::applyRestitution() {
   for (Constraint& constraint : constraints_) {
     if (constraint.restitution == 0.0) continue;
-    SolverBody& a = bodies_[size_t(constraint.bodyA)];
-    SolverBody& b = bodies_[size_t(constraint.bodyB)];
+    SubstepBody& a = bodies_[static_cast<size_t>(constraint.bodyA)];
+    SubstepBody& b = bodies_[static_cast<size_t>(constraint.bodyB)];
     const bool bounced =
         applyPairRestitution(constraint, a, b) || applyPointRestitution(constraint, a, b);
     if (!bounced || !settings_.frictionInRestitution) continue;
@@ -298,11 +376,11 @@ void SoftStepSolver::applyRestitution() {
 }
 
 // Each point that bounces, one after the other. Returns whether any did.
-bool SoftStepSolver::applyPointRestitution(Constraint& constraint, SolverBody& a,
-                                           SolverBody& b) const {
+bool SoftStepSolver::applyPointRestitution(Constraint& constraint, SubstepBody& a,
+                                           SubstepBody& b) const {
   bool bounced = false;
   for (int i = 0; i < constraint.pointCount; ++i) {
-    ConstraintPoint& cp = constraint.points[size_t(i)];
+    ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
     if (!bounces(cp)) continue;
     bounced = true;
     const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(constraint.normal);
@@ -321,7 +399,7 @@ double SoftStepSolver::bounceBase(const ConstraintPoint& cp) const {
 // Sets the point's bounce base to `after` (≥ 0) and applies the change. The last substep's
 // impulse, which the next step warm-starts from, takes the change too, never below 0.
 void SoftStepSolver::setBounceImpulse(const Constraint& constraint, ConstraintPoint& cp,
-                                      SolverBody& a, SolverBody& b, double after) const {
+                                      SubstepBody& a, SubstepBody& b, double after) const {
   const double change = after - bounceBase(cp);
   cp.normalImpulse = std::max(cp.normalImpulse + change, 0.0);
   cp.totalNormalImpulse += change;
@@ -332,8 +410,8 @@ void SoftStepSolver::setBounceImpulse(const Constraint& constraint, ConstraintPo
 // leave each point separating at −e times its closing speed before the step, or pushing nothing,
 // found together (w = K (x − x₀) + vn − target ≥ 0, x·w = 0). False when the pair is not solved
 // as one: the switch is off, a point does not bounce, or K is too ill-conditioned.
-bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
-                                          SolverBody& b) const {
+bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SubstepBody& a,
+                                          SubstepBody& b) const {
   if (!settings_.pairRestitution.enabled || constraint.pointCount != 2) return false;
   ConstraintPoint& p0 = constraint.points[0];
   ConstraintPoint& p1 = constraint.points[1];
@@ -344,7 +422,7 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
   const Vec2 before(bounceBase(p0), bounceBase(p1));
   Vec2 missing;  // vn − target at each point now
   for (int i = 0; i < 2; ++i) {
-    const ConstraintPoint& cp = constraint.points[size_t(i)];
+    const ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
     const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(n);
     missing(i) = vn + constraint.restitution * cp.relativeVelocity;
   }
@@ -359,10 +437,11 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SolverBody& a,
 // and the friction state of each point.
 void SoftStepSolver::storeImpulses(const StepContext& context) const {
   for (const Constraint& constraint : constraints_) {
-    Manifold& manifold = context.manifolds[size_t(constraint.manifold)];
+    Manifold& manifold = context.manifolds[static_cast<size_t>(constraint.manifold)];
+    if (constraint.atTouch) manifold.normal = constraint.normal;
     for (int i = 0; i < constraint.pointCount; ++i) {
-      const ConstraintPoint& cp = constraint.points[size_t(i)];
-      ContactPoint& point = manifold.points[size_t(i)];
+      const ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+      ContactPoint& point = manifold.points[static_cast<size_t>(i)];
       point.normalImpulse = cp.totalNormalImpulse;
       point.tangentImpulse = cp.totalTangentImpulse;
       point.substepNormalImpulse = cp.normalImpulse;
@@ -376,7 +455,7 @@ void SoftStepSolver::finishBodies(const StepContext& context, double h) const {
   for (size_t i = 0; i < context.bodies.size(); ++i) {
     Body& body = context.bodies[i];
     if (!body.isAwake()) continue;
-    const SolverBody& solverBody = bodies_[i];
+    const SubstepBody& solverBody = bodies_[i];
     body.position += solverBody.deltaPosition;
     body.angle += solverBody.deltaAngle;
     body.velocity = solverBody.velocity;

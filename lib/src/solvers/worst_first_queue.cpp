@@ -12,13 +12,14 @@ void WorstFirstQueue::reset(const std::vector<double>& keys, double threshold) {
   waitingTotal_ = 0.0;
   waiting_ = 0;
   slotOf_.assign(keys.size(), kOutside);
-  for (int item = 0; item < int(keys.size()); ++item) {
+  for (int item = 0; item < static_cast<int>(keys.size()); ++item) {
     if (keys[item] <= threshold_) continue;
-    place(int(heap_.size()), {keys[item], item});
+    place(static_cast<int>(heap_.size()), {keys[item], item});
     waitingTotal_ += keys[item];
     ++waiting_;
   }
-  for (int slot = int(heap_.size()) / 2 - 1; slot >= 0; --slot) siftDown(slot, heap_[slot]);
+  for (int slot = static_cast<int>(heap_.size()) / 2 - 1; slot >= 0; --slot)
+    siftDown(slot, heap_[slot]);
 }
 
 void WorstFirstQueue::update(int item, double key) {
@@ -58,7 +59,7 @@ void WorstFirstQueue::settle() {
 
 // Puts the entry at the slot (which may be one past the end) and records where it is.
 void WorstFirstQueue::place(int slot, const Entry& entry) {
-  if (slot == int(heap_.size())) heap_.push_back(entry);
+  if (slot == static_cast<int>(heap_.size())) heap_.push_back(entry);
   heap_[slot] = entry;
   slotOf_[entry.item] = slot;
 }
@@ -76,7 +77,7 @@ void WorstFirstQueue::siftUp(int slot, Entry entry) {
 
 // Moves the hole at `slot` down past every larger child, then fills it with entry.
 void WorstFirstQueue::siftDown(int slot, Entry entry) {
-  const int count = int(heap_.size());
+  const int count = static_cast<int>(heap_.size());
   for (;;) {
     const int first = kArity * slot + 1;
     if (first >= count) break;
@@ -93,7 +94,7 @@ void WorstFirstQueue::siftDown(int slot, Entry entry) {
 
 void WorstFirstQueue::push(const Entry& entry) {
   heap_.push_back(entry);
-  siftUp(int(heap_.size()) - 1, entry);
+  siftUp(static_cast<int>(heap_.size()) - 1, entry);
 }
 
 // Takes the entry at `slot` out: the last entry fills the hole and moves to its place.
@@ -101,7 +102,7 @@ void WorstFirstQueue::remove(int slot) {
   slotOf_[heap_[slot].item] = kOutside;
   const Entry last = heap_.back();
   heap_.pop_back();
-  if (slot == int(heap_.size())) return;
+  if (slot == static_cast<int>(heap_.size())) return;
   if (slot > 0 && last.bound > heap_[(slot - 1) / kArity].bound) {
     siftUp(slot, last);
   } else {

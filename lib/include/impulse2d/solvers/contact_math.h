@@ -48,6 +48,40 @@ void applyPairImpulse(Velocities& a, Velocities& b, const Vec2& rA, const Vec2& 
   b.angularVelocity += b.inverseInertia * cross(rB, P);
 }
 
+/// One SolverBody per body, in the bodies' order: each body's velocities and inverse mass and
+/// inertia (zero for static bodies, so impulses leave them still).
+inline void loadSolverBodies(const std::vector<Body>& bodies,
+                             std::vector<SolverBody>& solverBodies) {
+  solverBodies.resize(bodies.size());
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const Body& body = bodies[i];
+    solverBodies[i] = {body.velocity, body.angularVelocity, body.inverseMass, body.inverseInertia};
+  }
+}
+
+/// The inverse effective mass of a contact along `direction` (unit), from the arms rA, rB of
+/// each centre to the point: 1/m_A + 1/m_B + (rA × d)²/I_A + (rB × d)²/I_B, the relative
+/// velocity there per unit impulse along d.
+template <typename Masses>
+double inverseEffectiveMass(const Masses& a, const Masses& b, const Vec2& armA, const Vec2& armB,
+                            const Vec2& direction) {
+  const double rA = cross(armA, direction);
+  const double rB = cross(armB, direction);
+  return a.inverseMass + b.inverseMass + a.inverseInertia * rA * rA + b.inverseInertia * rB * rB;
+}
+
+/// One entry of a contact matrix K from arms: the relative velocity along dj at the point of
+/// arms (armAj, armBj) per unit impulse along di at the point of arms (armAi, armBi),
+/// (1/m_A + 1/m_B) di·dj + (rAi × di)(rAj × dj)/I_A + (rBi × di)(rBj × dj)/I_B.
+template <typename Masses>
+double couplingPerUnitImpulse(const Masses& a, const Masses& b, const Vec2& armAi,
+                              const Vec2& armBi, const Vec2& di, const Vec2& armAj,
+                              const Vec2& armBj, const Vec2& dj) {
+  return (a.inverseMass + b.inverseMass) * di.dot(dj) +
+         a.inverseInertia * cross(armAi, di) * cross(armAj, dj) +
+         b.inverseInertia * cross(armBi, di) * cross(armBj, dj);
+}
+
 // ---- velocity change per unit impulse: the one building block of every effective mass ----
 
 /// The velocity change of `body` along `measureDirection` at `measurePoint` that a unit impulse

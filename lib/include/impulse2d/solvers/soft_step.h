@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "impulse2d/solver.h"
+#include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/soft_step_settings.h"
 
 namespace impulse2d {
@@ -55,11 +56,7 @@ class SoftStepSolver : public ContactSolver {
  private:
   /// What the iterations touch of a body: velocities, inverse masses, and how far it moved since
   /// the step began (deltaAngle's cosine and sine rotate the contact arms).
-  struct SolverBody {
-    Vec2 velocity = Vec2::Zero();
-    double angularVelocity = 0.0;
-    double inverseMass = 0.0;
-    double inverseInertia = 0.0;
+  struct SubstepBody : SolverBody {
     Vec2 velocityPerSubstep = Vec2::Zero();  ///< (g + F/m)·h
     double angularVelocityPerSubstep = 0.0;  ///< (τ/I)·h
     Vec2 deltaPosition = Vec2::Zero();
@@ -93,6 +90,8 @@ class SoftStepSolver : public ContactSolver {
     /// The arms that turn with their bodies within the step: not a circle's (roundSurfaces).
     bool turnArmA = true;
     bool turnArmB = true;
+    /// Normal and arms taken from where round surfaces will touch (speculativeAtTouch).
+    bool atTouch = false;
     std::array<ConstraintPoint, 2> points;
   };
   /// What a point's normal row asks in this sweep: its bias velocity and its softness.
@@ -104,27 +103,31 @@ class SoftStepSolver : public ContactSolver {
 
   void prepareBodies(const StepContext& context, double h);
   void prepareConstraints(const StepContext& context, double h);
+  void placePoint(const Manifold& manifold, const ContactPoint& point, const Body& bodyA,
+                  const Body& bodyB, ConstraintPoint& cp) const;
+  void placeAtTouch(const StepContext& context, Constraint& constraint) const;
+  void prepareMasses(Constraint& constraint) const;
   Softness pointSoftness(double hertz, double h) const;
   void integrateVelocities();
   void warmStart();
   double solve(const StepContext& context, bool useBias, int substep);
-  void solveNormals(Constraint& constraint, SolverBody& a, SolverBody& b, bool useBias);
-  NormalRow normalRow(const Constraint& constraint, const ConstraintPoint& cp, const SolverBody& a,
-                      const SolverBody& b, bool useBias) const;
-  void solveFriction(Constraint& constraint, SolverBody& a, SolverBody& b) const;
+  void solveNormals(Constraint& constraint, SubstepBody& a, SubstepBody& b, bool useBias);
+  NormalRow normalRow(const Constraint& constraint, const ConstraintPoint& cp, const SubstepBody& a,
+                      const SubstepBody& b, bool useBias) const;
+  void solveFriction(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
   void integratePositions(double h);
   void applyRestitution();
   bool bounces(const ConstraintPoint& cp) const;
   double bounceBase(const ConstraintPoint& cp) const;
-  void setBounceImpulse(const Constraint& constraint, ConstraintPoint& cp, SolverBody& a,
-                        SolverBody& b, double after) const;
-  bool applyPairRestitution(Constraint& constraint, SolverBody& a, SolverBody& b) const;
-  bool applyPointRestitution(Constraint& constraint, SolverBody& a, SolverBody& b) const;
+  void setBounceImpulse(const Constraint& constraint, ConstraintPoint& cp, SubstepBody& a,
+                        SubstepBody& b, double after) const;
+  bool applyPairRestitution(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
+  bool applyPointRestitution(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
   void storeImpulses(const StepContext& context) const;
   void finishBodies(const StepContext& context, double h) const;
 
   SoftStepSettings settings_;
-  std::vector<SolverBody> bodies_;
+  std::vector<SubstepBody> bodies_;
   std::vector<Constraint> constraints_;
   double inverseSubstep_ = 0.0;
   double pushVelocity_ = 0.0;

@@ -63,6 +63,11 @@ struct SoftStepSettings {
   /// Round surfaces: a circle's contact follows its centre, not its turning arm, and a contact
   /// found across a gap acts where the circle will touch.
   bool roundSurfaces = true;
+  /// A speculative contact between round surfaces (two circles, or a circle and a polygon's
+  /// vertex) takes its normal and arms from where the two will touch within the step, moving at
+  /// their velocities, so an oblique round impact leaves at Newton's angles and speeds. Default
+  /// on; off (v3, the box2d_v3 preset) the normal is the line of centres where it was found.
+  bool speculativeAtTouch = true;
   /// A one-point manifold is also found anew once the bodies moved as far as the contact
   /// distance it was found within, so a pivoting polygon's next vertex is not missed.
   bool recycleWithinFoundDistance = true;
