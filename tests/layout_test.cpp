@@ -1,9 +1,12 @@
 // The architecture, checked: the physics core (the sources of the `impulse2d` target in
 // lib/CMakeLists.txt, and every project header they reach) never includes rendering, scene files
-// or Box2D, and no solver file includes another solver; solvers share contact_math.h and the
-// other shared modules instead (Solver2D's shape).
+// or Box2D, no solver file includes another solver (solvers share contact_math.h and the other
+// shared modules instead), and neither the world nor the solver interface names a method
+// (Solver2D's shape).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -67,6 +70,12 @@ std::set<std::string> coreIncludesReached(std::set<fs::path>& visited) {
   return reached;
 }
 
+std::string lowered(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
 bool startsWith(const std::string& text, const std::string& prefix) {
   return text.rfind(prefix, 0) == 0;
 }
@@ -105,4 +114,23 @@ TEST_CASE("no solver file includes another solver", "[layout]") {
       if (included != own) CHECK(solvers.count(included) == 0);
     }
   }
+}
+
+TEST_CASE("neither the world nor the solver interface names a method", "[layout]") {
+  const std::vector<std::string> methodWords = {"softstep", "soft_step", "soft step", "recycl",
+                                                "integratesbodies"};
+  const std::vector<fs::path> files = {kLib / "include" / "impulse2d" / "solver.h",
+                                       kLib / "include" / "impulse2d" / "world.h",
+                                       kLib / "src" / "world.cpp"};
+  for (const fs::path& file : files) {
+    const std::string text = lowered(readText(file));
+    REQUIRE(!text.empty());
+    for (const std::string& word : methodWords) {
+      INFO(file.filename().string() << " mentions " << word);
+      CHECK(text.find(word) == std::string::npos);
+    }
+  }
+  // The world has its own speculative-contacts setting; the interface asks only neutral questions.
+  const std::string interface = lowered(readText(kLib / "include" / "impulse2d" / "solver.h"));
+  CHECK(interface.find("speculative") == std::string::npos);
 }

@@ -294,7 +294,7 @@ TEST_CASE(
     box.angle = 0.0;
     box.updateCache();
     world->findContacts();
-    CHECK(world->lastStepStatistics().recycledManifolds == 1);
+    CHECK(world->lastStepStatistics().reusedManifolds == 1);
     const Manifold& recycled = world->manifolds().at(0);
     CHECK(recycled.normal == found.normal);
     for (int i = 0; i < found.pointCount; ++i) {
@@ -312,12 +312,12 @@ TEST_CASE(
     box.position.x() += 0.01;
     box.updateCache();
     world->findContacts();
-    CHECK(world->lastStepStatistics().recycledManifolds == 1);
+    CHECK(world->lastStepStatistics().reusedManifolds == 1);
     // Moved 6 cm more, past the recycle distance: found anew either way.
     box.position.x() += 0.06;
     box.updateCache();
     world->findContacts();
-    CHECK(world->lastStepStatistics().recycledManifolds == 0);
+    CHECK(world->lastStepStatistics().reusedManifolds == 0);
   }
   // A one-point manifold (a disc on the ground) moved 1 cm: found anew within the found distance,
   // recycled on v3's rule.
@@ -333,7 +333,7 @@ TEST_CASE(
     moved.position.x() += 0.01;
     moved.updateCache();
     world->findContacts();
-    CHECK(world->lastStepStatistics().recycledManifolds == (withinFoundDistance ? 0 : 1));
+    CHECK(world->lastStepStatistics().reusedManifolds == (withinFoundDistance ? 0 : 1));
   }
   // A disc on a box's corner, its normal running from the corner to its centre, moved 1 mm
   // (within every distance): found anew, since its normal has turned by 1 mm / r; kept on v3's
@@ -357,8 +357,7 @@ TEST_CASE(
       const bool onCorner = along > 0.0;
       INFO((onCorner ? "on the corner" : "on the face")
            << ", round normals renewed: " << renewRoundNormals);
-      CHECK(world->lastStepStatistics().recycledManifolds ==
-            (onCorner && renewRoundNormals ? 0 : 1));
+      CHECK(world->lastStepStatistics().reusedManifolds == (onCorner && renewRoundNormals ? 0 : 1));
     }
   }
 }

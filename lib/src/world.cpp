@@ -49,29 +49,22 @@ void fallAsleep(Body& body) {
   body.torque = 0.0;
 }
 
-// How far B may move before its manifold is found anew. Within the found distance a one-point
-// manifold (a vertex or a circle on a face) is found anew before any point of B has moved as far
-// as the distance it was found within, so a vertex that was not in it, such as the next vertex of
-// a polygon pivoting on one, cannot have reached A's surface unseen. A two-point manifold holds
-// both ends of an edge on the face: the next vertex of that polygon reaches the face only by
-// turning through the exterior angle there (72° for a regular pentagon, 45° for an octagon),
-// beyond the largest turn (11.5°) that finds it anew, so it keeps v3's recycle distance. Only a
-// corner flatter than the largest turn, on an irregular polygon, could still land unseen.
-double recycleDistance(const ContactRecycling& limits, const Manifold& old) {
-  if (!limits.withinFoundDistance || old.pointCount == 2) return limits.distance;
-  return std::min(limits.distance, old.found.distance);
-}
-
-// m. How far B's centre has moved relative to A's since the manifold was found: in A's frame (v3),
-// or in the world's, where the recycled normal and arms are kept, so that a pair turning together
-// by θ at a distance d counts as moving d θ.
-double offsetMoved(const ContactRecycling& limits, const Body& a, const Body& b,
-                   const FoundPose& found) {
-  if (!limits.inWorldFrame) return (a.toLocal(b.position) - found.relativePosition).norm();
-  return (b.position - a.position - rotation(found.angleA) * found.relativePosition).norm();
-}
-
 }  // namespace
+
+// The shared stages of a substep of length h, as the solver's step calls them.
+class World::WorldStages : public StepStages {
+ public:
+  WorldStages(World& world, double h) : world_(world), h_(h) {}
+  void integrateVelocities() override { world_.integrateVelocities(h_); }
+  void integratePositions() override { world_.integratePositions(h_); }
+  void clearForces() override { world_.clearForces(); }
+  void refreshCaches() override { world_.refreshCaches(); }
+  void stopAtNonFiniteBody() override { world_.stopAtNonFiniteBody(); }
+
+ private:
+  World& world_;
+  double h_;
+};
 
 World::World(const WorldSettings& settings, std::unique_ptr<ContactSolver> solver)
     : settings_(settings), solver_(std::move(solver)) {
@@ -109,18 +102,8 @@ void World::substep(double h) {
   }
   findContacts(h);
   wakeTouchedIslands();
-  const bool solverMovesBodies = solver_->integratesBodies();
-  if (!solverMovesBodies) integrateVelocities(h);
-  stopAtNonFiniteBody();
-  const StepContext context{bodies_, manifoldsToSolve(), h, observer_, settings_.gravity};
-  solver_->solveVelocities(context);
-  if (!solverMovesBodies) integratePositions(h);
-  solver_->solvePositions(context);
-  if (solverMovesBodies) {
-    clearForces();
-  } else {
-    refreshCaches();
-  }
+  WorldStages stages(*this, h);
+  solver_->step({bodies_, manifoldsToSolve(), h, observer_, settings_.gravity}, stages);
   storeSolvedManifolds();
   stopAtNonFiniteBody();
   putRestingIslandsToSleep(h);
@@ -154,9 +137,9 @@ void World::findContacts(double h) {
     old = keepSleepingManifolds(old, pair);
     const bool hadManifold = old != previousManifolds_.cend() && keyOf(*old) == pair;
     Manifold manifold;
-    if (hadManifold && recycleManifold(*old, manifold)) {
+    if (hadManifold && solver_->keepManifold(*old, bodies_, manifold)) {
       manifolds_.push_back(manifold);
-      ++statistics_.recycledManifolds;
+      ++statistics_.reusedManifolds;
       continue;
     }
     if (!collidePair(pair, h, manifold)) continue;
@@ -191,48 +174,9 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   return true;
 }
 
-// Contact recycling (Box2D v3), when the solver asks for it: while neither body has turned more
-// than the largest turn since the manifold was found, and B's centre has moved less than the
-// recycle distance in A's frame (plus what the pair's relative turn moves a point at the
-// farther-reaching dynamic body's largest extent), the manifold is kept with its normal, ids,
-// impulses and arms as found; only each point's overlap follows how far the bodies moved since,
-// the arms turned with them (a circle's not, with roundSurfaces), as a soft step's substeps
-// measure it. A normal that runs to a circle's centre turns as the bodies move past each other,
-// so the solver may ask to find such manifolds anew every step (renewRoundNormals; v3 keeps them).
-bool World::recycleManifold(const Manifold& old, Manifold& manifold) const {
-  const ContactRecycling limits = solver_->contactRecycling();
-  if (limits.distance <= 0.0 || old.pointCount == 0) return false;
-  const Body& a = bodies_[size_t(old.bodyA)];
-  const Body& b = bodies_[size_t(old.bodyB)];
-  if (limits.renewRoundNormals && normalRunsToCentre(a.shape, b.shape, old)) return false;
-  const double turnA = a.angle - old.found.angleA;
-  const double turnB = b.angle - old.found.angleB;
-  if (std::abs(turnA) > limits.largestTurn || std::abs(turnB) > limits.largestTurn) return false;
-  const double reach =
-      std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
-  const double moved =
-      offsetMoved(limits, a, b, old.found) + reach * std::abs(std::sin(turnB - turnA));
-  if (moved >= recycleDistance(limits, old)) return false;
-  manifold = old;
-  const auto armTurn = [&limits](const Body& body, double turn) {
-    return !limits.roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : 0.0;
-  };
-  const Mat2 turnOfA = rotation(armTurn(a, turnA));
-  const Mat2 turnOfB = rotation(armTurn(b, turnB));
-  for (int i = 0; i < manifold.pointCount; ++i) {
-    ContactPoint& point = manifold.points[size_t(i)];
-    const Vec2 onA = a.position + turnOfA * point.foundArmA;
-    const Vec2 onB = b.position + turnOfB * point.foundArmB;
-    point.penetration = point.foundPenetration - (onB - onA).dot(manifold.normal);
-    point.point = contactPointBetween(onA, onB);
-    point.carried = true;
-  }
-  return true;
-}
-
-// Speculative contacts, by the world's setting or the solver's wish.
+// Speculative contacts, by the world's setting or because the solver finds its contacts ahead.
 bool World::speculativeContacts() const {
-  return settings_.speculativeContacts || solver_->wantsSpeculativeContacts();
+  return settings_.speculativeContacts || solver_->findsContactsAhead();
 }
 
 // Speculative contacts: the gap the pair can close within the substep is added to the margin.
@@ -351,7 +295,7 @@ void World::integrateVelocities(double h) {
   }
 }
 
-// After a solver that moved the bodies itself (it used the forces in its substeps).
+// After a solver that moved the bodies itself (it used the forces in its own integration).
 void World::clearForces() {
   for (Body& body : bodies_) {
     if (!body.isAwake()) continue;

@@ -1,6 +1,6 @@
 // The one interface every contact method sits behind, so a scene can run, trace and compare any
-// of them. The world calls solveVelocities after gravity and forces are integrated into the
-// velocities, and solvePositions after the positions are integrated (see world.h for the order).
+// of them. The world finds the contacts, then calls the method's step, which runs the shared
+// stages and its own passes in its own order (see world.h and docs/architecture.md).
 #pragma once
 
 #include <memory>
@@ -70,31 +70,28 @@ struct SolveReport {
   bool converged = true;
 };
 
-/// Contact recycling (Box2D v3): the world keeps a pair's manifold from step to step, its normal
-/// and arms as found and only its overlap updated, while neither body has turned more than
-/// largestTurn since it was found and B has moved less than `distance` relative to A (world.h).
-struct ContactRecycling {
-  double distance = 0.0;     ///< m; 0: every manifold is found anew each substep
-  double largestTurn = 0.0;  ///< rad
-  /// A circle's overlap follows its centre alone, its arm not turned (SoftStepSettings).
-  bool roundSurfaces = false;
-  /// A one-point manifold is kept only while the bodies moved less than the contact distance it
-  /// was found within as well (SoftStepSettings::recycleWithinFoundDistance).
-  bool withinFoundDistance = false;
-  /// A manifold whose normal runs to a circle's centre (normalRunsToCentre) is found anew every
-  /// step (SoftStepSettings::renewRoundNormals); false: it is kept like any other, as in v3.
-  bool renewRoundNormals = false;
-  /// B's movement is measured in the world's frame, where the recycled normal and arms are kept,
-  /// so a pair that turns together counts as moving (SoftStepSettings::recycleInWorldFrame);
-  /// false: in A's frame, as Box2D v3 measures it.
-  bool inWorldFrame = false;
+/// The shared stages of a substep that a method calls, in its own order, from ContactSolver::step.
+/// The world provides them; each acts on the awake bodies.
+class StepStages {
+ public:
+  virtual ~StepStages() = default;
+  /// v += (g + F/m)·h, ω += (τ/I)·h; the forces and torques are cleared.
+  virtual void integrateVelocities() = 0;
+  /// x += v·h, θ += ω·h; the rotation is updated, the bounds wait for refreshCaches.
+  virtual void integratePositions() = 0;
+  /// Clears the forces and torques a method used in its own integration.
+  virtual void clearForces() = 0;
+  /// The rotation exact from the angle again and the bounds the next broad phase sweeps with.
+  virtual void refreshCaches() = 0;
+  /// Stops the run (NonFiniteState) at the first body whose state is not finite.
+  virtual void stopAtNonFiniteBody() = 0;
 };
 
 /// A contact method: one interface, one file per method (docs/architecture.md).
 class ContactSolver {
  public:
   virtual ~ContactSolver() = default;
-  /// The name scene files use: "micro", "sequential", "reference", "soft_step".
+  /// The name scene files use (one of solverNames()).
   virtual std::string name() const = 0;
   /// Contact impulses: change the velocities so no contact keeps closing.
   virtual void solveVelocities(const StepContext& context) = 0;
@@ -102,15 +99,17 @@ class ContactSolver {
   virtual void solvePositions(const StepContext& context) = 0;
   /// How the last solve went.
   virtual SolveReport lastReport() const { return {}; }
-  /// True for a method that moves the bodies itself within its own substeps (soft step): the
-  /// world then leaves velocities and positions to it and only clears the forces it used.
-  virtual bool integratesBodies() const { return false; }
-  /// True for a method whose contacts are speculative whatever the world's speculativeContacts
-  /// says (soft step, as Box2D v3: every contact is found before the surfaces meet).
-  virtual bool wantsSpeculativeContacts() const { return false; }
-  /// The recycling of manifolds this method wants; none by default (soft step, as Box2D v3, keeps
-  /// them while the bodies move little).
-  virtual ContactRecycling contactRecycling() const { return {}; }
+  /// One substep of the method, from the velocities to the bodies' caches, as a sequence of the
+  /// shared stages and the method's own passes. By default: integrate velocities, solve
+  /// velocities, integrate positions, solve positions, refresh the caches.
+  virtual void step(const StepContext& context, StepStages& stages);
+  /// The method may keep last substep's manifold of a pair instead of having it found anew: it
+  /// then writes the manifold to keep into `kept` and returns true. By default it never does.
+  virtual bool keepManifold(const Manifold& previous, const std::vector<Body>& bodies,
+                            Manifold& kept) const;
+  /// True for a method that needs every contact found before the surfaces meet, whatever the
+  /// world's settings say: the broad and narrow phases then reach as far as the pair can close.
+  virtual bool findsContactsAhead() const { return false; }
 };
 
 /// The names of the solvers this library builds, in the order they were written.

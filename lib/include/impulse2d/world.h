@@ -2,30 +2,31 @@
 //
 // ONE STEP runs the substep below `substeps` times with h = dt/substeps (settings.h), each after
 // applyLoads adds every body's AppliedLoad (body.h) at the substep's start time.
-// ONE SUBSTEP, IN ORDER (semi-implicit, "symplectic", Euler):
+// ONE SUBSTEP, IN ORDER (semi-implicit, "symplectic", Euler). The world does what every method
+// shares (1-3, 5); the method's step (ContactSolver::step, solver.h) runs the shared stages of 4
+// and its own passes, in its own order:
 //   1. wakeDisturbedBodies a sleeping body the user gave a velocity or force wakes.
-//   2. findContacts        broad phase (sort and sweep on bounding boxes, fattened by |v|·h with
-//                          speculative contacts), then the narrow phase for each overlapping pair
-//                          with an awake body; a pair of sleeping or static bodies keeps its
+//   2. findContacts        broad phase (sort and sweep on bounding boxes, fattened by |v|·h when
+//                          contacts are found ahead), then the narrow phase for each overlapping
+//                          pair with an awake body; a pair of sleeping or static bodies keeps its
 //                          manifold as it was. Impulses of the last step are carried over to
-//                          points with the same feature id (for warm starting). With contact
-//                          recycling (ContactRecycling, soft step) a pair that moved little
-//                          since its manifold was found keeps it, only its overlap updated.
+//                          points with the same feature id (for warm starting). A pair whose last
+//                          manifold the solver keeps (ContactSolver::keepManifold) is not found
+//                          anew.
 //   3. wakeTouchedIslands  islands are the dynamic bodies joined by contacts (static bodies join
 //                          none); an island with an awake body wakes whole.
-//   4. integrateVelocities awake bodies: v += (g + F/m)·h, ω += (τ/I)·h; the linear acceleration
+//   4. the solver's step, given only the manifolds with an awake body. By default:
+//      integrateVelocities awake bodies: v += (g + F/m)·h, ω += (τ/I)·h; the linear acceleration
 //                          is kept in Body::lastAcceleration; forces and torques are cleared.
 //                          A body whose state is then not finite stops the step (NonFiniteState),
 //                          as one left so after the substep does.
-//   5. solveVelocities     the solver's contact impulses act on the new velocities; it is given
-//                          only the manifolds with an awake body.
-//   6. integratePositions  awake bodies: x += v·h, θ += ω·h, with the velocities after impulses;
-//                          the rotation is updated, the bounds wait for step 8.
-//   7. solvePositions      the solver removes what penetration remains.
-//   8. refreshCaches       awake bodies: rotation from the angle and bounds, once per substep.
-//   A solver that integrates the bodies itself (soft step, ContactSolver::integratesBodies) does
-//   4-8 within its own substeps in solveVelocities; the world then only clears the forces.
-//   9. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
+//      solveVelocities     the solver's contact impulses act on the new velocities.
+//      integratePositions  awake bodies: x += v·h, θ += ω·h, with the velocities after impulses;
+//                          the rotation is updated, the bounds wait for refreshCaches.
+//      solvePositions      the solver removes what penetration remains.
+//      refreshCaches       awake bodies: rotation from the angle and bounds, once per substep.
+//      A method that moves the bodies within its own substeps calls clearForces instead.
+//   5. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
 //                          thresholds for timeToSleep sleeps; its velocities become zero.
 #pragma once
 
@@ -40,11 +41,11 @@ namespace impulse2d {
 /// What the last substep modelled, so tests and benchmarks can see that sleeping bodies cost
 /// nothing.
 struct StepStatistics {
-  int awakeBodies = 0;        ///< dynamic bodies integrated
-  int narrowPhasePairs = 0;   ///< pairs given to collide()
-  int keptManifolds = 0;      ///< manifolds of sleeping (or sleeping and static) pairs kept as is
-  int recycledManifolds = 0;  ///< manifolds kept from the last substep (contact recycling)
-  int solvedManifolds = 0;    ///< manifolds given to the solver
+  int awakeBodies = 0;       ///< dynamic bodies integrated
+  int narrowPhasePairs = 0;  ///< pairs given to collide()
+  int keptManifolds = 0;     ///< manifolds of sleeping (or sleeping and static) pairs kept as is
+  int reusedManifolds = 0;   ///< manifolds the solver kept from the last substep (keepManifold)
+  int solvedManifolds = 0;   ///< manifolds given to the solver
 };
 
 /// Our world: bodies stepped in the order written above, contacts resolved by one ContactSolver.
@@ -77,13 +78,15 @@ class World : public Simulation {
   /// what the last step did
   const StepStatistics& lastStepStatistics() const { return statistics_; }
 
-  /// Step 2 alone: rebuilds the manifolds from the current positions (recycling those the solver
-  /// lets it keep); the statistics then count this step 2 alone.
+  /// Step 2 alone: rebuilds the manifolds from the current positions (keeping those the solver
+  /// keeps); the statistics then count this step 2 alone.
   void findContacts();
 
  private:
   using BodyPair = std::pair<int, int>;
   using ManifoldIterator = std::vector<Manifold>::const_iterator;
+  /// The stages below, as a solver's step calls them (StepStages, solver.h).
+  class WorldStages;
 
   /// Adds every body's applied load at simulated time `time` (s), before a substep.
   void applyLoads(double time);
@@ -98,7 +101,6 @@ class World : public Simulation {
   void layOutSweep();
   ManifoldIterator keepSleepingManifolds(ManifoldIterator old, const BodyPair& before);
   bool collidePair(const BodyPair& pair, double h, Manifold& manifold);
-  bool recycleManifold(const Manifold& old, Manifold& manifold) const;
   bool speculativeContacts() const;
   double contactDistance(const Body& a, const Body& b, double h) const;
   bool involvesAwakeBody(const Manifold& manifold) const;

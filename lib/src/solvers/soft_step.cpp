@@ -66,6 +66,28 @@ std::optional<Vec2> touchingNormal(const RoundFeature& a, const RoundFeature& b,
   return Vec2(atTouch / distance);
 }
 
+// How far B may move before its manifold is found anew. Within the found distance a one-point
+// manifold (a vertex or a circle on a face) is found anew before any point of B has moved as far
+// as the distance it was found within, so a vertex that was not in it, such as the next vertex of
+// a polygon pivoting on one, cannot have reached A's surface unseen. A two-point manifold holds
+// both ends of an edge on the face: the next vertex of that polygon reaches the face only by
+// turning through the exterior angle there (72° for a regular pentagon, 45° for an octagon),
+// beyond the largest turn (11.5°) that finds it anew, so it keeps v3's recycle distance. Only a
+// corner flatter than the largest turn, on an irregular polygon, could still land unseen.
+double recycleDistance(const SoftStepSettings& settings, const Manifold& old) {
+  if (!settings.recycleWithinFoundDistance || old.pointCount == 2) return settings.recycleDistance;
+  return std::min(settings.recycleDistance, old.found.distance);
+}
+
+// m. How far B's centre has moved relative to A's since the manifold was found: in A's frame (v3),
+// or in the world's, where the recycled normal and arms are kept, so that a pair turning together
+// by θ at a distance d counts as moving d θ.
+double offsetMoved(const SoftStepSettings& settings, const Body& a, const Body& b,
+                   const FoundPose& found) {
+  if (!settings.recycleInWorldFrame) return (a.toLocal(b.position) - found.relativePosition).norm();
+  return (b.position - a.position - rotation(found.angleA) * found.relativePosition).norm();
+}
+
 }  // namespace
 
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
@@ -81,11 +103,55 @@ Softness rigidSoftness(double h) {
   return {1.0 / h, 1.0, 0.0};
 }
 
-ContactRecycling SoftStepSolver::contactRecycling() const {
-  if (!settings_.contactRecycling) return {};
-  return {settings_.recycleDistance,   settings_.recycleLargestTurn,
-          settings_.roundSurfaces,     settings_.recycleWithinFoundDistance,
-          settings_.renewRoundNormals, settings_.recycleInWorldFrame};
+// The bodies move within solveVelocities' own substeps; the forces it used are cleared after.
+void SoftStepSolver::step(const StepContext& context, StepStages& stages) {
+  stages.stopAtNonFiniteBody();
+  solveVelocities(context);
+  solvePositions(context);
+  stages.clearForces();
+}
+
+// Contact recycling (Box2D v3): while neither body has turned more than the largest turn since the
+// manifold was found, and B's centre has moved less than the recycle distance in A's frame (plus
+// what the pair's relative turn moves a point at the farther-reaching dynamic body's largest
+// extent), the manifold is kept with its normal, ids, impulses and arms as found; only each
+// point's overlap follows how far the bodies moved since, the arms turned with them (a circle's
+// not, with roundSurfaces), as the substeps measure it. A normal that runs to a circle's centre
+// turns as the bodies move past each other, so such manifolds may be found anew every step
+// (renewRoundNormals; v3 keeps them).
+bool SoftStepSolver::keepManifold(const Manifold& old, const std::vector<Body>& bodies,
+                                  Manifold& manifold) const {
+  if (!settings_.contactRecycling || settings_.recycleDistance <= 0.0 || old.pointCount == 0) {
+    return false;
+  }
+  const Body& a = bodies[size_t(old.bodyA)];
+  const Body& b = bodies[size_t(old.bodyB)];
+  if (settings_.renewRoundNormals && normalRunsToCentre(a.shape, b.shape, old)) return false;
+  const double turnA = a.angle - old.found.angleA;
+  const double turnB = b.angle - old.found.angleB;
+  const double largestTurn = settings_.recycleLargestTurn;
+  if (std::abs(turnA) > largestTurn || std::abs(turnB) > largestTurn) return false;
+  const double reach =
+      std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
+  const double moved =
+      offsetMoved(settings_, a, b, old.found) + reach * std::abs(std::sin(turnB - turnA));
+  if (moved >= recycleDistance(settings_, old)) return false;
+  manifold = old;
+  const bool roundSurfaces = settings_.roundSurfaces;
+  const auto armTurn = [roundSurfaces](const Body& body, double turn) {
+    return !roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : 0.0;
+  };
+  const Mat2 turnOfA = rotation(armTurn(a, turnA));
+  const Mat2 turnOfB = rotation(armTurn(b, turnB));
+  for (int i = 0; i < manifold.pointCount; ++i) {
+    ContactPoint& point = manifold.points[size_t(i)];
+    const Vec2 onA = a.position + turnOfA * point.foundArmA;
+    const Vec2 onB = b.position + turnOfB * point.foundArmB;
+    point.penetration = point.foundPenetration - (onB - onA).dot(manifold.normal);
+    point.point = contactPointBetween(onA, onB);
+    point.carried = true;
+  }
+  return true;
 }
 
 void SoftStepSolver::solveVelocities(const StepContext& context) {

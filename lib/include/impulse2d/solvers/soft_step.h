@@ -46,9 +46,15 @@ class SoftStepSolver : public ContactSolver {
   void solvePositions(const StepContext&) override {}
   /// iterations: substeps made; residual: the largest normal impulse change in the last relax.
   SolveReport lastReport() const override { return report_; }
-  bool integratesBodies() const override { return true; }
-  bool wantsSpeculativeContacts() const override { return settings_.speculativeContacts; }
-  ContactRecycling contactRecycling() const override;
+  /// The whole substep is its own: solveVelocities moves the bodies within its substeps, so the
+  /// shared stages only check the state and clear the forces it used.
+  void step(const StepContext& context, StepStages& stages) override;
+  /// Contact recycling (Box2D v3): last substep's manifold of a pair that moved little since it
+  /// was found is kept, its normal and arms as found and only its overlap updated.
+  bool keepManifold(const Manifold& previous, const std::vector<Body>& bodies,
+                    Manifold& kept) const override;
+  /// Every contact is speculative (settings speculativeContacts, as Box2D v3).
+  bool findsContactsAhead() const override { return settings_.speculativeContacts; }
 
   /// its settings
   const SoftStepSettings& settings() const { return settings_; }
