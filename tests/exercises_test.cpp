@@ -168,7 +168,7 @@ TEST_CASE("exercise 8: under sequential impulses each contact carries the weight
 TEST_CASE("exercise 9: a 20-box tower stands with accumulated impulses, fails without",
           "[exercises][accumulation]") {
   SceneFile scene = exerciseScene("tower.toml", "count = 10", "count = 20");
-  const double slopAllowance = 20 * 0.005;
+  const double slopAllowance = 20 * scene.solverSettings.sequential.targets.allowedPenetration;
   CHECK(travelAfter(scene, "box20", 600) < slopAllowance);
   scene.solverSettings.sequential.accumulateImpulses = false;
   CHECK(travelAfter(scene, "box20", 600) > slopAllowance);
@@ -178,7 +178,7 @@ TEST_CASE("exercise 10: warm started, 10 sweeps a step hold a 10-box tower, from
           "[exercises][warm_starting]") {
   SceneFile scene = exerciseScene("tower.toml");
   scene.solverSettings.sequential.velocityIterations = 10;
-  const double slopAllowance = 10 * 0.005;
+  const double slopAllowance = 10 * scene.solverSettings.sequential.targets.allowedPenetration;
   CHECK(travelAfter(scene, "box10", 600) < slopAllowance);
   scene.solverSettings.sequential.warmStarting = false;
   CHECK(travelAfter(scene, "box10", 600) > slopAllowance);
@@ -189,10 +189,12 @@ TEST_CASE("exercise 11: the penetration bias removes β of the overlap beyond th
   SceneFile scene = exerciseScene("sunk.toml");
   const auto depth = [](const Simulation& world) { return 0.5 - world.bodies()[1].position.y(); };
   auto world = buildWorld(scene);
+  const ContactTargetSettings& targets = scene.solverSettings.sequential.targets;
+  const double slop = targets.allowedPenetration;
   world->step();
-  CHECK(depth(*world) == Approx(0.05 - 0.2 * (0.05 - 0.005)).margin(0.0005));
+  CHECK(depth(*world) == Approx(0.05 - targets.biasFactor * (0.05 - slop)).margin(0.0005));
   solvers::runSteps(*world, 119);
-  CHECK(std::abs(depth(*world) - 0.005) < 1e-4);
+  CHECK(std::abs(depth(*world) - slop) < 1e-4);
   scene.solverSettings.sequential.targets.penetrationBias = false;
   auto unbiased = buildWorld(scene);
   solvers::runSteps(*unbiased, 120);

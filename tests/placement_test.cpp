@@ -10,6 +10,7 @@
 
 #include "i2d_process.h"
 #include "impulse2d/scene/scene_file.h"
+#include "scene_errors.h"
 
 using namespace impulse2d;
 
@@ -65,14 +66,7 @@ double lowestAbove(const std::vector<Vec2>& points, const Line& line) {
   return lowest;
 }
 
-std::string errorOf(const std::string& text) {
-  try {
-    parseScene(text, "bad.toml");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "";
-}
+using scene_errors::errorOf;
 
 }  // namespace
 

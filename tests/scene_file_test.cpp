@@ -7,6 +7,7 @@
 #include <string>
 
 #include "impulse2d/scene/scene_file.h"
+#include "scene_errors.h"
 
 using namespace impulse2d;
 
@@ -60,25 +61,11 @@ double degrees(double d) {
   return d * M_PI / 180.0;
 }
 
-/// The what() of the SceneError that parsing `text` as "bad.toml" throws ("" if none).
-std::string errorOf(const std::string& text) {
-  try {
-    parseScene(text, "bad.toml");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "";
-}
+using scene_errors::errorOf;
 
 /// The what() of the SceneError that applying `assignment` to a one-ball scene throws.
 std::string errorOfSetting(const std::string& assignment) {
-  SceneFile scene = parseScene(kOneBall, "ball.toml");
-  try {
-    applySetting(scene, assignment);
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "";
+  return scene_errors::errorOfSetting(parseScene(kOneBall, "ball.toml"), assignment);
 }
 
 }  // namespace

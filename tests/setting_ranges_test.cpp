@@ -12,6 +12,7 @@
 #include "i2d_process.h"
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/scene/setting_ranges.h"
+#include "scene_errors.h"
 
 using namespace impulse2d;
 
@@ -19,25 +20,12 @@ namespace {
 
 const std::string kBall = "[[body]]\nname = \"ball\"\nshape = \"circle\"\nradius = 0.5\n";
 
-/// The error of a scene file of `text`, or "" when it loads.
-std::string errorOf(const std::string& text) {
-  try {
-    parseScene(text, "bad.toml");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "";
-}
+using scene_errors::errorOf;
 
 /// The error of one --set on a scene of the named solver, or "" when it applies.
 std::string errorOfSetting(const std::string& solver, const std::string& assignment) {
-  SceneFile scene = parseScene("[world]\nsolver = \"" + solver + "\"\n" + kBall, "ball.toml");
-  try {
-    applySetting(scene, assignment);
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "";
+  return scene_errors::errorOfSetting(
+      parseScene("[world]\nsolver = \"" + solver + "\"\n" + kBall, "ball.toml"), assignment);
 }
 
 /// Every numeric field the scope's settings struct names, with its current value.

@@ -11,6 +11,7 @@
 #include "failures.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/presets.h"
+#include "impulse2d/scene/scene_file.h"
 #include "impulse2d/scene/setting_ranges.h"
 #include "scene_search.h"
 
@@ -112,9 +113,7 @@ std::vector<std::string> splitList(const std::string& text, char separator,
 /// A --set or --panel assignment has the shape section.key=value; what the key and value mean is
 /// the scene reader's to judge (a refused value is an invalid scene, exit 3).
 void checkAssignment(const std::string& assignment, const std::string& option) {
-  const size_t equals = assignment.find('=');
-  const size_t dot = assignment.find('.');
-  if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
+  if (!impulse2d::isSettingAssignment(assignment)) {
     throw UsageError("option " + option +
                      " needs section.key=value, such as solver.velocity_iterations=12, not '" +
                      assignment + "'");

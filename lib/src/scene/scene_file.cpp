@@ -116,15 +116,19 @@ void checkSceneSize(const Scene& scene, const std::string& sourceName) {
   if (!refused.empty()) throw SceneError(sourceName, refused);
 }
 
-void applySetting(Scene& scene, const std::string& assignment) {
+bool isSettingAssignment(const std::string& assignment) {
   const size_t equals = assignment.find('=');
   const size_t dot = assignment.find('.');
-  if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
+  return equals != std::string::npos && dot != std::string::npos && dot < equals;
+}
+
+void applySetting(Scene& scene, const std::string& assignment) {
+  if (!isSettingAssignment(assignment)) {
     throw SceneError("--set", 1, 1,
                      "expected section.key=value, such as solver.velocity_iterations=12, not '" +
                          assignment + "'");
   }
-  const toml::table root = parseAssignment(assignment, equals);
+  const toml::table root = parseAssignment(assignment, assignment.find('='));
   scene_file::rejectUnknownKeys(root, {"world", "solver"}, "--set");
   scene_file::readWorld(root, scene);
   scene_file::readSolver(root, scene);

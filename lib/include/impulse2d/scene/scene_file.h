@@ -52,6 +52,10 @@ SceneFile loadSceneFile(const std::string& path);
 /// Parses scene text; `sourceName` names it in errors and gives the scene its name (its stem).
 SceneFile parseScene(std::string_view text, const std::string& sourceName);
 
+/// Whether `assignment` has the shape "section.key=value" (a dot before the first '='), the
+/// shape applySetting needs before it reads the key and the value.
+bool isSettingAssignment(const std::string& assignment);
+
 /// Applies one command-line override "section.key=value" (section world or solver) to the scene,
 /// with the value written as in a scene file; a bare word counts as a string (world.solver=micro).
 /// Errors are SceneErrors located in the assignment, named "--set".
