@@ -1,4 +1,4 @@
-// Convergence against the exact answer (issue 14): on one settled step of each scene, the error of
+// Convergence against the exact answer: on one settled step of each scene, the error of
 // sequential impulses after k = 1…64 sweeps, from a cold and from a warm start, and of the
 // micro-collision resolver after k impulses per contact point (its sweep equivalent), each
 // against the global reference's exact answer of the same pre-solve state.

@@ -1,4 +1,4 @@
-// What modelling only what a scene needs buys (issue 7, docs/sleeping.md):
+// What modelling only what a scene needs buys (docs/sleeping.md):
 //   1. a settled 20-row pyramid under sequential impulses, awake (sleeping = false) against
 //      asleep: median µs per step and their ratio (target: asleep ≤ 5% of awake);
 //   2. the micro-collision resolver's cost against contact points on pyramids of 5..30 rows,

@@ -1,4 +1,4 @@
-// The sweep behind docs/charts/ (issue 7): every method × its iterations (1 to 64) × time step
+// The sweep behind docs/charts/: every method × its iterations (1 to 64) × time step
 // (1/30 to 1/240 s) on four scenes, each with one error of its own, and the cost per step of
 // each method's defaults on pyramids of 10 to about 5000 boxes. A progress bar goes to stderr,
 // the points to OUTDIR/sweep.csv, pareto.csv and scaling.csv (docs/charts/*.gp draw them), and the

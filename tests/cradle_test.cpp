@@ -1,4 +1,4 @@
-// Newton's cradle (lecture 3.6, issue 13): the micro-collision resolver recomputes a contact's
+// Newton's cradle (lecture 3.6): the micro-collision resolver recomputes a contact's
 // bounce from its closing velocity at the moment it is resolved, so an impulse that stops one
 // ball makes the next contact close, and the collision passes along a row of touching balls to
 // the far ball. A bounce target fixed once per step cannot: the row moves off together.

@@ -165,3 +165,43 @@ TEST_CASE("the rows and plots written before the overflow are kept, and finite",
   CHECK(lineCount(errors) == 2);  // the header and the solve of step 1
   CHECK(errors.rfind("solve,t,points,", 0) == 0);
 }
+
+TEST_CASE("a static body holds no energy, however far away it stands", "[non-finite][energy]") {
+  // g·x overflows for a ground 1e308 m below: −m g·x with m = 0 was 0 · ∞ = NaN, and a run
+  // printed "potential -nan J" with exit 0 (found by the scene_loader fuzzer).
+  const impulse2d::SceneFile scene = impulse2d::parseScene(R"([world]
+steps = 3
+
+[[body]]
+name = "far ground"
+type = "static"
+shape = "box"
+size = [20.0, 1.0]
+position = [0.0, -1e308]
+
+[[body]]
+name = "ball"
+shape = "circle"
+radius = 0.5
+position = [0.0, 2.0]
+)",
+                                                           "far_ground.toml");
+  for (const std::string& solver : impulse2d::solverNames()) {
+    INFO(solver);
+    impulse2d::SceneFile run = scene;
+    run.solver = solver;
+    std::unique_ptr<impulse2d::Simulation> simulation = impulse2d::makeSimulation(run);
+    for (int step = 0; step < 3; ++step) simulation->step();
+    const impulse2d::Body& ground = simulation->bodies().front();
+    CHECK(ground.potentialEnergy(simulation->settings().gravity) == 0.0);
+    CHECK(ground.kineticEnergy() == 0.0);
+    // The world's potential energy is the ball's alone: m g y, with y near its 2 m start.
+    const impulse2d::Body& ball = simulation->bodies().back();
+    CHECK(ball.position.y() == Approx(2.0).margin(0.02));
+    CHECK(impulse2d::potentialEnergy(*simulation) == Approx(ball.mass * 9.81 * ball.position.y()));
+  }
+  // Box2D keeps floats: a ground beyond a float's range is refused before the first step.
+  impulse2d::SceneFile box2d = scene;
+  box2d.solver = "box2d";
+  CHECK_THROWS_AS(impulse2d::makeSimulation(box2d), impulse2d::NonFiniteState);
+}

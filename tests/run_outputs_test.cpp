@@ -1,4 +1,4 @@
-// What a run writes besides frames (issue 16): the viewer page, the animated GIF and the gnuplot
+// What a run writes besides frames: the viewer page, the animated GIF and the gnuplot
 // plots, and the one-line errors for an unwritable plot directory and an unknown animation kind.
 // The page in a browser is scripts/viewer-test's job (headless Chromium).
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Static and dynamic friction of the micro-collision resolver on slopes (lecture 3.6, issue 13):
+// Static and dynamic friction of the micro-collision resolver on slopes (lecture 3.6):
 // a box or a regular pentagon on a static slope of 5° to 25° holds still when μ > tan θ and
 // slides at a = g(sin θ − μ cos θ) when μ < tan θ, whether it starts at rest on the slope or lands
 // on it from a small drop.

@@ -175,7 +175,7 @@ TEST_CASE("overlapping boxes are thrown apart by the penetration bias, not by a 
 
 TEST_CASE("a bouncy stack under micro gains no energy, with or without the bounce fixes",
           "[stability][restitution][micro]") {
-  // Before issue 13 (bounce targets fixed once per step) the stack without both fixes hopped
+  // With bounce targets fixed once per step the stack without both fixes hopped
   // from e = 0.75. Taking each bounce on the closing velocity when the contact is resolved, the
   // lecture's method holds the stack at e = 1 even without them.
   CHECK(holds("restitution_stack", "micro − both bounce fixes", 1.0));

@@ -1,5 +1,5 @@
 // The scenes and method settings the benchmarks measure: the shipped benchmark scenes
-// (demos/scenes/, issue 7), the family of pyramids for the scaling chart, and each method's own
+// (demos/scenes/), the family of pyramids for the scaling chart, and each method's own
 // iteration knob set by its [solver] name, so every benchmark configures a method the way a
 // scene file would.
 #pragma once

@@ -31,7 +31,7 @@ void measureScaling(std::vector<ScalingPoint>& points, ProgressBar& progress);
 
 /// Below this many boxes the fixed cost of a step hides how a method scales.
 inline constexpr int kFitMinimumBoxes = 45;
-/// The largest pyramid of the range issue 13 sets its exponent target over (10 to 40 rows): 40
+/// The largest pyramid of the range the exponent target is set over (10 to 40 rows): 40
 /// rows. Above it micro's first steps from rest, which a size's warm-up does not get past, pass
 /// the cap of 200 impulses per point, and the few steps that fit the budget are those.
 inline constexpr int kRangeMaximumBoxes = 820;

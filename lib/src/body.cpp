@@ -8,11 +8,15 @@ void Body::updateCache() {
   bounds = computeBounds(shape, position, rotation);
 }
 
+// A static body holds no energy: it has no mass, and −0 · g·x would be NaN for a ground placed
+// so far away that g·x overflows.
 double Body::kineticEnergy() const {
+  if (isStatic()) return 0.0;
   return 0.5 * mass * velocity.squaredNorm() + 0.5 * inertia * angularVelocity * angularVelocity;
 }
 
 double Body::potentialEnergy(const Vec2& gravity) const {
+  if (isStatic()) return 0.0;
   return -mass * gravity.dot(position);
 }
 

@@ -25,10 +25,6 @@ void carryOverImpulses(const Manifold& previous, Manifold& manifold) {
       if (previous.points[j].id != point.id) continue;
       point.normalImpulse = previous.points[j].normalImpulse;
       point.tangentImpulse = previous.points[j].tangentImpulse;
-      point.substepNormalImpulse = previous.points[j].substepNormalImpulse;
-      point.substepTangentImpulse = previous.points[j].substepTangentImpulse;
-      point.bounced = previous.points[j].bounced;
-      point.exactState = previous.points[j].exactState;
       point.carried = true;
     }
   }

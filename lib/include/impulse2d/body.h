@@ -134,9 +134,9 @@ struct Body {
     rotation << c * inverseLength, -s * inverseLength, s * inverseLength, c * inverseLength;
   }
 
-  /// Kinetic energy ½ m v² + ½ I ω² (J).
+  /// Kinetic energy ½ m v² + ½ I ω² (J); zero for a static body.
   double kineticEnergy() const;
-  /// Potential energy in the gravity field g: −m g·x.
+  /// Potential energy in the gravity field g: −m g·x (J); zero for a static body, wherever it is.
   double potentialEnergy(const Vec2& gravity) const;
 };
 

@@ -31,11 +31,6 @@ inline FeatureId makeFeatureId(int featureOfA, int featureOfB) {
 /// Friction state of a contact point in the last solve, for frames and tests.
 enum class FrictionState { None, Static, Dynamic };
 
-/// The state the global reference solved a contact point in (active_set.h): no impulse, held by
-/// static friction, or sliding with friction on its limit, the tangent velocity positive or
-/// negative. Unknown: the reference did not solve the point last step.
-enum class ContactState { Unknown, Separated, Sticking, SlidingPositive, SlidingNegative };
-
 /// Where a contact's impulses act, from the points on A's and B's surfaces: midway between them,
 /// so one point carries both impulses and the pair's angular momentum is kept.
 inline Vec2 contactPointBetween(const Vec2& onA, const Vec2& onB) {
@@ -64,23 +59,11 @@ struct ContactPoint {
   double normalImpulse = 0.0;
   /// N s. Total friction impulse along the tangent this step.
   double tangentImpulse = 0.0;
-  /// N s. Soft step only: the impulses its last substep held, which warm start every substep of
-  /// the next step (Box2D v3's `normalImpulse`; the totals above are v3's `totalNormalImpulse`).
-  /// They differ in a step with an impact, whose impulse the first substep spends.
-  double substepNormalImpulse = 0.0;
-  /// N s, the friction impulse of the last substep
-  double substepTangentImpulse = 0.0;
   /// static, dynamic or none this step
   FrictionState friction = FrictionState::None;
-  /// The micro-collision resolver gave this point a bounce this step. Carried to the next step
-  /// by feature id, so the bounce is not warm-started as if it were resting weight.
-  bool bounced = false;
   /// Its impulses were carried over from last step's point with the same feature id: the solver
   /// solved this point last step (a new point starts at zero impulse and false).
   bool carried = false;
-  /// The reference's state of this point, carried over with the impulses: next step's active
-  /// set starts from it, so a resting pile poses the system it solved last step.
-  ContactState exactState = ContactState::Unknown;
 };
 
 /// Coefficients of a contact from the two materials. The mixing rule is Box2D's, so both engines

@@ -57,6 +57,9 @@ void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   report_.residual = remaining < 0 ? 0.0 : severity(states_[remaining]);
   report_.converged = remaining < 0;
   storeVelocities(context);
+  for (const PointState& state : states_)
+    bounced_.store(state.manifold, state.point, state.bounced);
+  bounced_.remember(context.manifolds, context.bodies);
 }
 
 // After every round of one impulse per point (with passCapWhileProgressing), the total desired
@@ -82,6 +85,7 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
   dt_ = context.dt;
   loadSolverBodies(context);
   states_.clear();
+  bounced_.recall(context.manifolds);
   for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     Manifold& manifold = context.manifolds[m];
     context.bodies[manifold.bodyA].wake();  // a contact's impulses wake its bodies
@@ -207,11 +211,11 @@ MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepCo
       inverseOrZero(state.contactMatrix, settings_.singularMatrixTolerance);
   state.penetration = point.penetration;
   state.accelerationVelocity = accelerationVelocity(context, manifold);
-  state.totalImpulse = warmStartTotals(manifold, point);
+  state.totalImpulse =
+      warmStartTotals(manifold, point, bounced_.recalled(manifoldIndex, pointIndex));
   point.normalImpulse = normalPart(state.totalImpulse);
   point.tangentImpulse = tangentPart(state.totalImpulse);
   point.friction = FrictionState::None;
-  point.bounced = false;
   if (normalPart(state.totalImpulse) > 0.0) applyImpulse(state, state.totalImpulse);
   return state;
 }
@@ -219,9 +223,9 @@ MicroCollisionSolver::PointState MicroCollisionSolver::preparePoint(const StepCo
 // Warm starting: the (normal, tangent) totals the point ended the last step with, matched by
 // feature id, kept inside the friction cone. A bounce is not resting weight: a point that bounced
 // starts from zero, as does every point with warm starting off.
-Vec2 MicroCollisionSolver::warmStartTotals(const Manifold& manifold,
-                                           const ContactPoint& point) const {
-  if (!settings_.warmStarting || point.bounced || point.normalImpulse <= 0.0) return Vec2::Zero();
+Vec2 MicroCollisionSolver::warmStartTotals(const Manifold& manifold, const ContactPoint& point,
+                                           bool bouncedLastStep) const {
+  if (!settings_.warmStarting || bouncedLastStep || point.normalImpulse <= 0.0) return Vec2::Zero();
   const double frictionLimit = settings_.friction ? manifold.friction * point.normalImpulse : 0.0;
   return Vec2(point.normalImpulse, std::clamp(point.tangentImpulse, -frictionLimit, frictionLimit));
 }
@@ -426,7 +430,6 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
       newTotalImpulse(state, before, manifold.friction, desired, state.friction) - before;
   state.totalImpulse += impulse;
   state.bounced = state.bounced || bounces;
-  point.bounced = state.bounced;
   point.normalImpulse = normalPart(state.totalImpulse);
   point.tangentImpulse = tangentPart(state.totalImpulse);
   point.friction = state.friction;
@@ -529,7 +532,6 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
                                   : FrictionState::Static;
     point.bounced = point.bounced || bounce;
     ContactPoint& record = manifold.points[point.point];
-    record.bounced = point.bounced;
     record.normalImpulse = normalPart(total);
     record.tangentImpulse = tangentPart(total);
     record.friction = point.friction;

@@ -147,8 +147,8 @@ Eigen::Vector3d velocityOf(const Body& body) {
 
 void ReferenceSolver::solveVelocities(const StepContext& context) {
   const Eigen::VectorXd impulses = exactImpulses(context);
-  if (rows_.empty()) return;  // nothing touches: no system to solve
-  applyImpulses(context, impulses);
+  if (!rows_.empty()) applyImpulses(context, impulses);  // else nothing touches: nothing to solve
+  lastStates_.remember(context.manifolds, context.bodies);
 }
 
 Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
@@ -181,6 +181,7 @@ Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
 // penetration bias, speculative gaps) as sequential impulses.
 void ReferenceSolver::collectPoints(const StepContext& context) {
   rows_.clear();
+  lastStates_.recall(context.manifolds);
   for (size_t m = 0; m < context.manifolds.size(); ++m) {
     const Manifold& manifold = context.manifolds[m];
     const Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
@@ -206,7 +207,7 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
       }
       row.lastImpulse = {point.normalImpulse, point.tangentImpulse};
       row.carried = point.carried;
-      row.lastState = point.exactState;
+      row.lastState = lastStates_.recalled(static_cast<int>(m), i);
       rows_.push_back(row);
     }
   }
@@ -640,8 +641,7 @@ double ReferenceSolver::impulseScale(const std::vector<int>& points,
   return scale;
 }
 
-void ReferenceSolver::applyImpulses(const StepContext& context,
-                                    const Eigen::VectorXd& impulses) const {
+void ReferenceSolver::applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) {
   const double onLimit = settings_.residualTolerance * impulses.cwiseAbs().maxCoeff();
   for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
     const PointRow& row = rows_[static_cast<size_t>(i)];
@@ -651,7 +651,7 @@ void ReferenceSolver::applyImpulses(const StepContext& context,
     point.tangentImpulse = impulses(2 * i + 1);
     point.friction =
         frictionStateOf(point.normalImpulse, point.tangentImpulse, row.friction, onLimit);
-    point.exactState = row.state;
+    lastStates_.store(row.manifold, row.point, row.state);
     applyContactImpulse(context.bodies, manifold, row.point, point.normalImpulse,
                         point.tangentImpulse);
     context.report({SolverEvent::Phase::Velocity, 0, row.manifold, row.point,

@@ -200,6 +200,7 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
   const double hertz =
       std::min(settings_.contactHertz, settings_.maxHertzPerSubstepRate * inverseSubstep_);
   constraints_.resize(context.manifolds.size());
+  lastSubstep_.recall(context.manifolds);
   for (size_t m = 0; m < context.manifolds.size(); ++m) {
     const Manifold& manifold = context.manifolds[m];
     Constraint& constraint = constraints_[m];
@@ -219,7 +220,8 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
         bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
     for (int i = 0; i < manifold.pointCount; ++i) {
       ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
-      placePoint(manifold, manifold.points[static_cast<size_t>(i)], bodyA, bodyB, cp);
+      placePoint(manifold, manifold.points[static_cast<size_t>(i)], bodyA, bodyB,
+                 lastSubstep_.recalled(static_cast<int>(m), i), cp);
       cp.softness = pointSoftness(pairHertz, h);
     }
     if (settings_.speculativeAtTouch) placeAtTouch(context, constraint);
@@ -230,7 +232,8 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
 // A point's arms and separation base as found (with roundSurfaces, moved along the normal to
 // where a circle will touch), and its impulses to warm start from.
 void SoftStepSolver::placePoint(const Manifold& manifold, const ContactPoint& point,
-                                const Body& bodyA, const Body& bodyB, ConstraintPoint& cp) const {
+                                const Body& bodyA, const Body& bodyB,
+                                const LastSubstepImpulses& warmStart, ConstraintPoint& cp) const {
   const Vec2 shift =
       settings_.roundSurfaces
           ? towardsTouchingPoint(bodyA.shape, bodyB.shape, -point.foundPenetration, manifold.normal)
@@ -238,8 +241,8 @@ void SoftStepSolver::placePoint(const Manifold& manifold, const ContactPoint& po
   cp.armA = point.foundArmA + shift;
   cp.armB = point.foundArmB + shift;
   cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(manifold.normal);
-  cp.normalImpulse = settings_.warmStarting ? point.substepNormalImpulse : 0.0;
-  cp.tangentImpulse = settings_.warmStarting ? point.substepTangentImpulse : 0.0;
+  cp.normalImpulse = settings_.warmStarting ? warmStart.normal : 0.0;
+  cp.tangentImpulse = settings_.warmStarting ? warmStart.tangent : 0.0;
 }
 
 // A speculative contact between round surfaces (speculativeAtTouch) is turned to where the two
@@ -501,7 +504,7 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SubstepBody& a
 // The manifold keeps the impulses applied over the whole step (warm starts, solves and bounces
 // summed), as every method reports them, the last substep's to warm start the next step from,
 // and the friction state of each point.
-void SoftStepSolver::storeImpulses(const StepContext& context) const {
+void SoftStepSolver::storeImpulses(const StepContext& context) {
   for (const Constraint& constraint : constraints_) {
     Manifold& manifold = context.manifolds[static_cast<size_t>(constraint.manifold)];
     if (constraint.atTouch) manifold.normal = constraint.normal;
@@ -510,11 +513,11 @@ void SoftStepSolver::storeImpulses(const StepContext& context) const {
       ContactPoint& point = manifold.points[static_cast<size_t>(i)];
       point.normalImpulse = cp.totalNormalImpulse;
       point.tangentImpulse = cp.totalTangentImpulse;
-      point.substepNormalImpulse = cp.normalImpulse;
-      point.substepTangentImpulse = cp.tangentImpulse;
       point.friction = frictionStateOf(cp.normalImpulse, cp.tangentImpulse, manifold.friction, 0.0);
+      lastSubstep_.store(constraint.manifold, i, {cp.normalImpulse, cp.tangentImpulse});
     }
   }
+  lastSubstep_.remember(context.manifolds, context.bodies);
 }
 
 void SoftStepSolver::finishBodies(const StepContext& context, double h) const {

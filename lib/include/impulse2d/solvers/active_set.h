@@ -34,6 +34,11 @@
 
 namespace impulse2d {
 
+/// The state the global reference solved a contact point in: no impulse, held by static
+/// friction, or sliding with friction on its limit, the tangent velocity positive or negative.
+/// Unknown: the reference did not solve the point last step.
+enum class ContactState { Unknown, Separated, Sticking, SlidingPositive, SlidingNegative };
+
 /// One contact point of an island. Axis 0 is the normal, 1 the tangent; side 0 is body A, 1 B.
 struct IslandPoint {
   /// The island's number of each body (−1: a static body, which takes no impulse).

@@ -14,6 +14,7 @@
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/micro_collision_settings.h"
+#include "impulse2d/solvers/point_memory.h"
 #include "impulse2d/solvers/worst_first_queue.h"
 
 namespace impulse2d {
@@ -116,7 +117,8 @@ class MicroCollisionSolver : public ContactSolver {
   Vec2 contactVelocityNow(const PointState& state) const;
   void applyImpulse(const PointState& state, const Vec2& impulse);
   PointState preparePoint(const StepContext& context, int manifoldIndex, int pointIndex);
-  Vec2 warmStartTotals(const Manifold& manifold, const ContactPoint& point) const;
+  Vec2 warmStartTotals(const Manifold& manifold, const ContactPoint& point,
+                       bool bouncedLastStep) const;
   FrictionState carriedFriction(const PointState& state, double friction) const;
   void indexContactsByBody(const StepContext& context);
   double appliedRestitution(const PointState& state, double closingSpeed) const;
@@ -164,6 +166,9 @@ class MicroCollisionSolver : public ContactSolver {
   std::vector<SolverBody> solverBodies_;  ///< by body, during the velocity phase
   std::vector<Pose> poses_;               ///< by body, during the penetration phase
   std::vector<PointState> states_;
+  /// Whether each point had its bounce last step: a bounce is not resting weight, so it is not
+  /// warm-started.
+  PointMemory<bool> bounced_;
   std::vector<MovePoint> movePoints_;  ///< by point, as states_, during the penetration phase
   std::vector<PointPair> pairs_;
   std::vector<int>

@@ -33,6 +33,7 @@
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/active_set.h"
 #include "impulse2d/solvers/lcp.h"
+#include "impulse2d/solvers/point_memory.h"
 #include "impulse2d/solvers/reference_solver_settings.h"
 
 namespace impulse2d {
@@ -134,7 +135,7 @@ class ReferenceSolver : public ContactSolver {
   Eigen::VectorXd islandImpulses(const std::vector<int>& island, const Eigen::VectorXd& z) const;
   double residualOver(const std::vector<int>& points, const Eigen::VectorXd& impulses) const;
   double impulseScale(const std::vector<int>& points, const Eigen::VectorXd& impulses) const;
-  void applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) const;
+  void applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses);
   void fail(const std::string& reason);
 
   ReferenceSolverSettings settings_;
@@ -151,6 +152,9 @@ class ReferenceSolver : public ContactSolver {
   /// among the large islands of the step (a changed island is found out by its size or by
   /// refinement failing, and factorized anew).
   std::vector<std::unique_ptr<KeptFactorization>> keptFactors_;
+  /// Each point's state in the last answer, which the next step's active set starts from: a
+  /// resting pile poses the system it solved last step.
+  PointMemory<ContactState> lastStates_;
   SolveReport report_;
 };
 

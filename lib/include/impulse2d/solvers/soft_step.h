@@ -12,6 +12,7 @@
 
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/point_memory.h"
 #include "impulse2d/solvers/soft_step_settings.h"
 
 namespace impulse2d {
@@ -100,6 +101,14 @@ class SoftStepSolver : public ContactSolver {
     bool atTouch = false;
     std::array<ConstraintPoint, 2> points;
   };
+  /// What a point keeps from one step to the next: the impulses its last substep held, which warm
+  /// start every substep of the next step (v3's `normalImpulse`; the step's totals, which every
+  /// method reports in ContactPoint, are v3's `totalNormalImpulse`). They differ in a step with an
+  /// impact, whose impulse the first substep spends.
+  struct LastSubstepImpulses {
+    double normal = 0.0;   ///< N s
+    double tangent = 0.0;  ///< N s
+  };
   /// What a point's normal row asks in this sweep: its bias velocity and its softness.
   struct NormalRow {
     double bias = 0.0;
@@ -110,7 +119,8 @@ class SoftStepSolver : public ContactSolver {
   void prepareBodies(const StepContext& context, double h);
   void prepareConstraints(const StepContext& context, double h);
   void placePoint(const Manifold& manifold, const ContactPoint& point, const Body& bodyA,
-                  const Body& bodyB, ConstraintPoint& cp) const;
+                  const Body& bodyB, const LastSubstepImpulses& warmStart,
+                  ConstraintPoint& cp) const;
   void placeAtTouch(const StepContext& context, Constraint& constraint) const;
   void prepareMasses(Constraint& constraint) const;
   Softness pointSoftness(double hertz, double h) const;
@@ -129,12 +139,13 @@ class SoftStepSolver : public ContactSolver {
                         SubstepBody& b, double after) const;
   bool applyPairRestitution(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
   bool applyPointRestitution(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
-  void storeImpulses(const StepContext& context) const;
+  void storeImpulses(const StepContext& context);
   void finishBodies(const StepContext& context, double h) const;
 
   SoftStepSettings settings_;
   std::vector<SubstepBody> bodies_;
   std::vector<Constraint> constraints_;
+  PointMemory<LastSubstepImpulses> lastSubstep_;
   double inverseSubstep_ = 0.0;
   double pushVelocity_ = 0.0;
   SolveReport report_;
