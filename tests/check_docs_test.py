@@ -16,7 +16,8 @@ CLEAN = {
         "A colour #444444 is not an issue number.\n"
     ),
     "docs/images/figure.png": "",
-    "docs/design/note.md": "# A decision\n\nMeasured on 2026-11-27 in session 41 (issue 13): history is allowed here.\n",
+    "docs/design/note.md": "# A decision\n\n**Choice.** The queue: 12 % faster on `scripts/benchmarks`.\n",
+    "CHANGELOG.md": "# Changelog\n\n## 0.1 (2026-11-27)\n\n- Fixed in session 41 (issue 13): history is allowed here.\n",
     "lib/src/code.cpp": "// Resolves the worst contact first.\nint main() { return 0; }\n",
 }
 
@@ -27,6 +28,12 @@ OFFENCES = {
     "a session number": ("lib/src/code.cpp", "// Added in session 41.\n", "lib/src/code.cpp:1", "a session number"),
     "an issue number": ("apps/tool.cpp", "// See issue 13.\n", "apps/tool.cpp:1", "an issue number"),
     "a hash issue number": ("docs/page.md", "Fixed in #13.\n", "docs/page.md:1", "an issue number"),
+    "a date in a design note": (
+        "docs/design/note.md", "Measured on 2026-11-27.\n", "docs/design/note.md:1", "a date"
+    ),
+    "an issue number in a design note": (
+        "docs/design/note.md", "Dropped in issue 13.\n", "docs/design/note.md:1", "an issue number"
+    ),
     "a run-log phrase": ("docs/page.md", "This run was faster tonight.\n", "docs/page.md:1", "a run-log phrase"),
     "a long line": ("docs/page.md", "word " * 50 + "\n", "docs/page.md:1", "characters"),
 }
