@@ -46,16 +46,16 @@ struct ContactPoint {
   /// the features that made it, to carry impulses between steps
   FeatureId id = 0;
   /// m, world frame: the arms from A's and B's centres to `point`, and the penetration, when the
-  /// narrow phase found the point. A recycled manifold (world.h) keeps the arms as they were,
-  /// unturned, for soft step's Jacobians, and measures its overlap from them.
+  /// narrow phase found the point. A manifold a method keeps across steps
+  /// (ContactSolver::keepManifold) keeps them as they were and measures its overlap from them.
   Vec2 foundArmA = Vec2::Zero();
   /// B's arm, as found
   Vec2 foundArmB = Vec2::Zero();
   /// the penetration, as found
   double foundPenetration = 0.0;
 
-  /// N s. Total normal impulse the solver applied this step (the accumulated impulse of
-  /// sequential impulses, which also warm-starts the next step).
+  /// N s. Total normal impulse the solver applied this step (the accumulated impulse, which a
+  /// method may warm start the next step from).
   double normalImpulse = 0.0;
   /// N s. Total friction impulse along the tangent this step.
   double tangentImpulse = 0.0;

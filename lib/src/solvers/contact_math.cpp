@@ -26,9 +26,9 @@ Vec2 contactVelocity(const Body& a, const Body& b, const Vec2& point, const Vec2
 void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, int point,
                          double normalImpulse, double tangentImpulse) {
   const Vec2 impulse = normalImpulse * manifold.normal + tangentImpulse * manifold.tangent();
-  const Vec2& where = manifold.points[static_cast<size_t>(point)].point;
-  bodies[static_cast<size_t>(manifold.bodyA)].applyImpulse(-impulse, where);
-  bodies[static_cast<size_t>(manifold.bodyB)].applyImpulse(impulse, where);
+  const Vec2& where = manifold.points[point].point;
+  bodies[manifold.bodyA].applyImpulse(-impulse, where);
+  bodies[manifold.bodyB].applyImpulse(impulse, where);
 }
 
 double targetSeparatingVelocity(double normalVelocityBefore, double penetration, double restitution,

@@ -161,7 +161,7 @@ void MicroCollisionSolver::loadSolverBodies(const StepContext& context) {
 }
 
 void MicroCollisionSolver::storeVelocities(const StepContext& context) const {
-  for (size_t i = 0; i < context.bodies.size(); ++i) storeVelocity(context, static_cast<int>(i));
+  for (int i = 0; i < static_cast<int>(context.bodies.size()); ++i) storeVelocity(context, i);
 }
 
 void MicroCollisionSolver::storeVelocity(const StepContext& context, int body) const {
@@ -489,12 +489,37 @@ bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen:
 bool MicroCollisionSolver::applyPairChange(const StepContext& context, const PointState& worst,
                                            int iteration) {
   PointPair& pair = pairs_[worst.pair];
-  const std::array<PointState*, 2> points = {&states_[pair.first], &states_[pair.first + 1]};
+  const PointsOfPair points = {&states_[pair.first], &states_[pair.first + 1]};
   Manifold& manifold = context.manifolds[worst.manifold];
   const bool frictionless = !settings_.friction || manifold.friction <= 0.0;
   const bool bounce = toBounce(*points[0]);
-  if (bounce && !settings_.pairBounces) return false;
   std::array<Vec2, 2> desired;
+  if (!pairNeedsChange(points, bounce, desired)) return false;
+  if (pair.status == PointPair::Status::NotInverted) invertPairContactMatrix(pair);
+  if (pair.status == PointPair::Status::Singular) return false;
+  Eigen::Vector3d after;
+  bool sliding = false;
+  if (!newPairTotals(pair, points, desired, frictionless ? 0.0 : manifold.friction, after,
+                     sliding)) {
+    return false;
+  }
+  const FrictionState friction = frictionless ? FrictionState::None
+                                 : sliding    ? FrictionState::Dynamic
+                                              : FrictionState::Static;
+  const std::array<Vec2, 2> impulses = applyPairTotals(manifold, points, after, friction, bounce);
+  afterImpulse(context, worst);
+  for (int i = 0; i < 2; ++i) {
+    context.report({SolverEvent::Phase::Velocity, iteration, points[i]->manifold, points[i]->point,
+                    normalPart(desired[i]), normalPart(impulses[i]), tangentPart(impulses[i])});
+  }
+  return true;
+}
+
+// Whether both points may take a pair impulse (applyPairChange), and the velocity change each
+// wants.
+bool MicroCollisionSolver::pairNeedsChange(const PointsOfPair& points, bool bounce,
+                                           std::array<Vec2, 2>& desired) const {
+  if (bounce && !settings_.pairBounces) return false;
   for (int i = 0; i < 2; ++i) {
     const PointState& point = *points[i];
     if (!engaged(point) || point.bounced) return false;
@@ -502,34 +527,47 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
     if (severity(point) <= settings_.velocityEpsilon) return false;  // both must need it
     desired[i] = desiredVelocityChange(point);
   }
-  if (pair.status == PointPair::Status::NotInverted) invertPairContactMatrix(pair);
-  if (pair.status == PointPair::Status::Singular) return false;
+  return true;
+}
+
+// The pair's new totals (normal at each point, friction of both) that give the desired changes,
+// through the inverse contact matrix (its normal rows when frictionless, `friction` = 0), or on
+// the friction cone's edge when static friction cannot hold (`sliding`). False unless both
+// normal totals push.
+bool MicroCollisionSolver::newPairTotals(const PointPair& pair, const PointsOfPair& points,
+                                         const std::array<Vec2, 2>& desired, double friction,
+                                         Eigen::Vector3d& after, bool& sliding) const {
+  const bool frictionless = friction <= 0.0;
   const Eigen::Vector3d before(
       normalPart(points[0]->totalImpulse), normalPart(points[1]->totalImpulse),
       tangentPart(points[0]->totalImpulse) + tangentPart(points[1]->totalImpulse));
   const Eigen::Vector3d change(normalPart(desired[0]), normalPart(desired[1]),
                                0.5 * (tangentPart(desired[0]) + tangentPart(desired[1])));
-  Eigen::Vector3d after;
   if (frictionless) {
     after << before.head<2>() + pair.inverseNormalMatrix * change.head<2>(), 0.0;
   } else {
     after = before + pair.inverseContactMatrix * change;
   }
-  const bool sliding =
-      !frictionless && std::abs(after(2)) > manifold.friction * (after(0) + after(1));
-  const double slide = (after(2) > 0.0 ? 1.0 : -1.0) * manifold.friction;
+  sliding = !frictionless && std::abs(after(2)) > friction * (after(0) + after(1));
+  const double slide = (after(2) > 0.0 ? 1.0 : -1.0) * friction;
   if (sliding && !slidingPairTotals(pair, before, change, slide, after)) return false;
+  return !(after(0) <= 0.0 || after(1) <= 0.0);
+}
+
+// Gives both points their new totals, the friction total shared in proportion to the normal
+// totals, records them on the manifold and applies the changes; the impulses applied.
+std::array<Vec2, 2> MicroCollisionSolver::applyPairTotals(Manifold& manifold,
+                                                          const PointsOfPair& points,
+                                                          const Eigen::Vector3d& after,
+                                                          FrictionState friction, bool bounce) {
   const double normalTotal = after(0) + after(1);
-  if (after(0) <= 0.0 || after(1) <= 0.0) return false;
   std::array<Vec2, 2> impulses;
   for (int i = 0; i < 2; ++i) {
     PointState& point = *points[i];
     const Vec2 total(after(i), after(2) * after(i) / normalTotal);
     impulses[i] = total - point.totalImpulse;
     point.totalImpulse = total;
-    point.friction = frictionless ? FrictionState::None
-                     : sliding    ? FrictionState::Dynamic
-                                  : FrictionState::Static;
+    point.friction = friction;
     point.bounced = point.bounced || bounce;
     ContactPoint& record = manifold.points[point.point];
     record.normalImpulse = normalPart(total);
@@ -537,12 +575,7 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
     record.friction = point.friction;
     applyImpulse(point, impulses[i]);
   }
-  afterImpulse(context, worst);
-  for (int i = 0; i < 2; ++i) {
-    context.report({SolverEvent::Phase::Velocity, iteration, points[i]->manifold, points[i]->point,
-                    normalPart(desired[i]), normalPart(impulses[i]), tangentPart(impulses[i])});
-  }
-  return true;
+  return impulses;
 }
 
 // The points of one body, but for those it shares with `refreshedBody` (whose points were just
@@ -585,7 +618,7 @@ void MicroCollisionSolver::solvePositions(const StepContext& context) {
 // sine; the bodies get them (and their caches) once, at the end.
 void MicroCollisionSolver::loadPoses(const StepContext& context) {
   poses_.resize(context.bodies.size());
-  for (size_t i = 0; i < context.bodies.size(); ++i) {
+  for (int i = 0; i < static_cast<int>(context.bodies.size()); ++i) {
     const Body& body = context.bodies[i];
     poses_[i] = {body.position,
                  body.angle,
@@ -600,7 +633,7 @@ void MicroCollisionSolver::loadPoses(const StepContext& context) {
 }
 
 void MicroCollisionSolver::storePoses(const StepContext& context) {
-  for (size_t i = 0; i < context.bodies.size(); ++i) storePose(context, static_cast<int>(i));
+  for (int i = 0; i < static_cast<int>(context.bodies.size()); ++i) storePose(context, i);
 }
 
 void MicroCollisionSolver::storePose(const StepContext& context, int body) {
@@ -738,10 +771,7 @@ void MicroCollisionSolver::resolvePoint(const StepContext& context, int index, i
   const Vec2 at = contactPointNow(point, normal);
   const Vec2 armA = at - a.position;
   const Vec2 armB = at - b.position;
-  const double torqueArmA = cross(armA, normal);
-  const double torqueArmB = cross(armB, normal);
-  const double inertiaAtContact = a.inverseMass + a.inverseInertia * torqueArmA * torqueArmA +
-                                  b.inverseMass + b.inverseInertia * torqueArmB * torqueArmB;
+  const double inertiaAtContact = inverseEffectiveMass(a, b, armA, armB, normal);
   const double penetration = point.penetration;
   moveBody(a, armA, -normal, penetration, inertiaAtContact);
   moveBody(b, armB, normal, penetration, inertiaAtContact);

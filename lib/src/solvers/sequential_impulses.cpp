@@ -43,15 +43,15 @@ void SequentialImpulseSolver::prepare(const StepContext& context) {
   states_.clear();
   manifoldStates_.clear();
   const bool warm = settings_.warmStarting && settings_.accumulateImpulses;
-  for (size_t m = 0; m < context.manifolds.size(); ++m) {
+  for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     const Manifold& manifold = context.manifolds[m];
-    Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
-    Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+    Body& a = context.bodies[manifold.bodyA];
+    Body& b = context.bodies[manifold.bodyB];
     a.wake();  // a contact's impulses wake its bodies, as Body::applyImpulse does
     b.wake();
-    addManifoldState(context, static_cast<int>(m));
+    addManifoldState(context, m);
     for (int i = 0; i < manifold.pointCount; ++i) {
-      const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
+      const ContactPoint& point = manifold.points[i];
       PointState state;
       const Vec2 armA = point.point - a.position;
       const Vec2 armB = point.point - b.position;
@@ -80,20 +80,14 @@ void SequentialImpulseSolver::prepareBodies(const StepContext& context) {
 
 // The block solve needs running totals to clamp, so it goes with accumulated impulses.
 void SequentialImpulseSolver::addManifoldState(const StepContext& context, int manifold) {
-  const Manifold& contact = context.manifolds[static_cast<size_t>(manifold)];
+  const Manifold& contact = context.manifolds[manifold];
   ManifoldState state;
-  state.manifold = manifold;
-  state.bodyA = contact.bodyA;
-  state.bodyB = contact.bodyB;
-  state.normal = contact.normal;
-  state.friction = contact.friction;
+  state.load(contact, manifold);
   state.firstPoint = static_cast<int>(states_.size());
-  state.pointCount = contact.pointCount;
   if (settings_.block.enabled && settings_.accumulateImpulses && contact.pointCount == 2) {
     state.normalCoupling =
-        normalCouplingMatrix(context.bodies[static_cast<size_t>(contact.bodyA)],
-                             context.bodies[static_cast<size_t>(contact.bodyB)], contact.normal,
-                             contact.points[0].point, contact.points[1].point);
+        normalCouplingMatrix(context.bodies[contact.bodyA], context.bodies[contact.bodyB],
+                             contact.normal, contact.points[0].point, contact.points[1].point);
     state.block = isWellConditioned(state.normalCoupling, settings_.block.conditionLimit);
     state.inverseCoupling = inverseOrZero(state.normalCoupling, 0.0);
   }
@@ -108,7 +102,7 @@ void SequentialImpulseSolver::warmStart() {
     const Vec2 tangent = leftPerpendicular(manifold.normal);
     BodyPair bodies = loadBodies(manifold);
     for (int i = 0; i < manifold.pointCount; ++i) {
-      const PointState& point = states_[static_cast<size_t>(manifold.firstPoint + i)];
+      const PointState& point = states_[manifold.firstPoint + i];
       bodies.applyNormalImpulse(point, manifold.normal, point.normalImpulse);
       bodies.applyTangentImpulse(point, tangent, point.tangentImpulse);
     }
@@ -122,20 +116,20 @@ void SequentialImpulseSolver::warmStart() {
 double SequentialImpulseSolver::solveManifold(const StepContext& context,
                                               const ManifoldState& manifold, int sweep) {
   std::array<PointImpulse, 2> impulses;
-  PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
+  PointState* points = &states_[manifold.firstPoint];
   BodyPair bodies = loadBodies(manifold);
   if (settings_.frictionFirst) solveFrictions(manifold, bodies, impulses);
   if (manifold.block) {
     solveNormalsTogether(manifold, bodies, impulses);
   } else {
     for (int i = 0; i < manifold.pointCount; ++i) {
-      solveNormal(manifold, points[i], bodies, impulses[static_cast<size_t>(i)]);
+      solveNormal(manifold, points[i], bodies, impulses[i]);
     }
   }
   if (!settings_.frictionFirst) solveFrictions(manifold, bodies, impulses);
   double largestChange = 0.0;
   for (int i = 0; i < manifold.pointCount; ++i) {
-    const PointImpulse& impulse = impulses[static_cast<size_t>(i)];
+    const PointImpulse& impulse = impulses[i];
     largestChange = std::max(
         {largestChange, std::abs(impulse.normalImpulse), std::abs(impulse.tangentImpulse)});
     reportPoint(context, manifold, bodies, sweep, i, impulse);
@@ -157,9 +151,9 @@ inline void SequentialImpulseSolver::solveNormal(const ManifoldState& manifold, 
 // Friction at each point of a contact, against the normal totals as they stand.
 inline void SequentialImpulseSolver::solveFrictions(const ManifoldState& manifold, BodyPair& bodies,
                                                     std::array<PointImpulse, 2>& impulses) {
-  PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
+  PointState* points = &states_[manifold.firstPoint];
   for (int i = 0; i < manifold.pointCount; ++i) {
-    PointImpulse& impulse = impulses[static_cast<size_t>(i)];
+    PointImpulse& impulse = impulses[i];
     impulse.tangentImpulse = solveFriction(manifold, points[i], bodies, impulse.normalImpulse);
   }
 }
@@ -171,7 +165,7 @@ inline void SequentialImpulseSolver::solveFrictions(const ManifoldState& manifol
 inline void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& manifold,
                                                           BodyPair& bodies,
                                                           std::array<PointImpulse, 2>& impulses) {
-  PointState* points = &states_[static_cast<size_t>(manifold.firstPoint)];
+  PointState* points = &states_[manifold.firstPoint];
   const double error0 =
       bodies.relativeNormalVelocity(points[0], manifold.normal) - points[0].targetNormalVelocity;
   const double error1 =
@@ -182,7 +176,7 @@ inline void SequentialImpulseSolver::solveNormalsTogether(const ManifoldState& m
   const Vec2 newTotals = solveTwoPointLcp(manifold.normalCoupling, manifold.inverseCoupling,
                                           Vec2(error0, error1) - manifold.normalCoupling * totals);
   for (int i = 0; i < 2; ++i) {
-    impulses[static_cast<size_t>(i)].normalImpulse = newTotals(i) - totals(i);
+    impulses[i].normalImpulse = newTotals(i) - totals(i);
     points[i].normalImpulse = newTotals(i);
     bodies.applyNormalImpulse(points[i], manifold.normal, newTotals(i) - totals(i));
   }
@@ -234,17 +228,17 @@ inline double SequentialImpulseSolver::tangentImpulseChange(PointState& point, d
 // The sweeps' results back where the world keeps them: velocities on the bodies, the totals (the
 // next step's warm start) and the friction state on the manifolds' points.
 void SequentialImpulseSolver::storeResults(const StepContext& context) const {
-  for (size_t i = 0; i < context.bodies.size(); ++i) {
+  for (int i = 0; i < static_cast<int>(context.bodies.size()); ++i) {
     Body& body = context.bodies[i];
     if (body.isStatic()) continue;
     body.velocity = solverBodies_[i].velocity;
     body.angularVelocity = solverBodies_[i].angularVelocity;
   }
   for (const ManifoldState& state : manifoldStates_) {
-    Manifold& manifold = context.manifolds[static_cast<size_t>(state.manifold)];
+    Manifold& manifold = context.manifolds[state.manifold];
     for (int i = 0; i < state.pointCount; ++i) {
-      const PointState& solved = states_[static_cast<size_t>(state.firstPoint + i)];
-      ContactPoint& point = manifold.points[static_cast<size_t>(i)];
+      const PointState& solved = states_[state.firstPoint + i];
+      ContactPoint& point = manifold.points[i];
       point.normalImpulse = solved.normalImpulse;
       point.tangentImpulse = solved.tangentImpulse;
       point.friction =

@@ -124,8 +124,8 @@ bool SoftStepSolver::keepManifold(const Manifold& old, const std::vector<Body>& 
   if (!settings_.contactRecycling || settings_.recycleDistance <= 0.0 || old.pointCount == 0) {
     return false;
   }
-  const Body& a = bodies[size_t(old.bodyA)];
-  const Body& b = bodies[size_t(old.bodyB)];
+  const Body& a = bodies[old.bodyA];
+  const Body& b = bodies[old.bodyB];
   if (settings_.renewRoundNormals && normalRunsToCentre(a.shape, b.shape, old)) return false;
   const double turnA = a.angle - old.found.angleA;
   const double turnB = b.angle - old.found.angleB;
@@ -144,7 +144,7 @@ bool SoftStepSolver::keepManifold(const Manifold& old, const std::vector<Body>& 
   const Mat2 turnOfA = rotation(armTurn(a, turnA));
   const Mat2 turnOfB = rotation(armTurn(b, turnB));
   for (int i = 0; i < manifold.pointCount; ++i) {
-    ContactPoint& point = manifold.points[size_t(i)];
+    ContactPoint& point = manifold.points[i];
     const Vec2 onA = a.position + turnOfA * point.foundArmA;
     const Vec2 onB = b.position + turnOfB * point.foundArmB;
     point.penetration = point.foundPenetration - (onB - onA).dot(manifold.normal);
@@ -178,7 +178,7 @@ void SoftStepSolver::solveVelocities(const StepContext& context) {
 // not at all, and zero velocity.
 void SoftStepSolver::prepareBodies(const StepContext& context, double h) {
   bodies_.assign(context.bodies.size(), SubstepBody{});
-  for (size_t i = 0; i < context.bodies.size(); ++i) {
+  for (int i = 0; i < static_cast<int>(context.bodies.size()); ++i) {
     const Body& body = context.bodies[i];
     if (!body.isAwake()) continue;
     SubstepBody& solverBody = bodies_[i];
@@ -201,27 +201,20 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
       std::min(settings_.contactHertz, settings_.maxHertzPerSubstepRate * inverseSubstep_);
   constraints_.resize(context.manifolds.size());
   lastSubstep_.recall(context.manifolds);
-  for (size_t m = 0; m < context.manifolds.size(); ++m) {
+  for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     const Manifold& manifold = context.manifolds[m];
     Constraint& constraint = constraints_[m];
     constraint = Constraint{};
-    constraint.manifold = static_cast<int>(m);
-    constraint.bodyA = manifold.bodyA;
-    constraint.bodyB = manifold.bodyB;
-    constraint.normal = manifold.normal;
-    constraint.friction = manifold.friction;
-    constraint.restitution = manifold.restitution;
-    constraint.pointCount = manifold.pointCount;
-    const Body& bodyA = context.bodies[static_cast<size_t>(manifold.bodyA)];
-    const Body& bodyB = context.bodies[static_cast<size_t>(manifold.bodyB)];
+    constraint.load(manifold, m);
+    const Body& bodyA = context.bodies[manifold.bodyA];
+    const Body& bodyB = context.bodies[manifold.bodyB];
     constraint.turnArmA = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyA.shape);
     constraint.turnArmB = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyB.shape);
     const double pairHertz =
         bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
     for (int i = 0; i < manifold.pointCount; ++i) {
-      ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
-      placePoint(manifold, manifold.points[static_cast<size_t>(i)], bodyA, bodyB,
-                 lastSubstep_.recalled(static_cast<int>(m), i), cp);
+      ConstraintPoint& cp = constraint.points[i];
+      placePoint(manifold, manifold.points[i], bodyA, bodyB, lastSubstep_.recalled(m, i), cp);
       cp.softness = pointSoftness(pairHertz, h);
     }
     if (settings_.speculativeAtTouch) placeAtTouch(context, constraint);
@@ -251,12 +244,12 @@ void SoftStepSolver::placePoint(const Manifold& manifold, const ContactPoint& po
 // between the two features, each arm reaches the touching point, and the separation base is the
 // gap now along that normal, which the solver closes as the bodies reach it.
 void SoftStepSolver::placeAtTouch(const StepContext& context, Constraint& constraint) const {
-  const Manifold& manifold = context.manifolds[static_cast<size_t>(constraint.manifold)];
-  const Body& bodyA = context.bodies[static_cast<size_t>(manifold.bodyA)];
-  const Body& bodyB = context.bodies[static_cast<size_t>(manifold.bodyB)];
+  const Manifold& manifold = context.manifolds[constraint.manifold];
+  const Body& bodyA = context.bodies[manifold.bodyA];
+  const Body& bodyB = context.bodies[manifold.bodyB];
   if (manifold.pointCount != 1 || !normalRunsToCentre(bodyA.shape, bodyB.shape, manifold)) return;
-  const SubstepBody& a = bodies_[static_cast<size_t>(manifold.bodyA)];
-  const SubstepBody& b = bodies_[static_cast<size_t>(manifold.bodyB)];
+  const SubstepBody& a = bodies_[manifold.bodyA];
+  const SubstepBody& b = bodies_[manifold.bodyB];
   const double halfSteps = 0.5 * settings_.substeps;
   const ContactPoint& point = manifold.points[0];
   const RoundFeature featureA = roundFeature(
@@ -278,12 +271,12 @@ void SoftStepSolver::placeAtTouch(const StepContext& context, Constraint& constr
 
 // Each point's normal and tangent masses and its closing velocity before the step.
 void SoftStepSolver::prepareMasses(Constraint& constraint) const {
-  const SubstepBody& a = bodies_[static_cast<size_t>(constraint.bodyA)];
-  const SubstepBody& b = bodies_[static_cast<size_t>(constraint.bodyB)];
+  const SubstepBody& a = bodies_[constraint.bodyA];
+  const SubstepBody& b = bodies_[constraint.bodyB];
   const Vec2 normal = constraint.normal;
   const Vec2 tangent = leftPerpendicular(normal);
   for (int i = 0; i < constraint.pointCount; ++i) {
-    ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+    ConstraintPoint& cp = constraint.points[i];
     const double kNormal = inverseEffectiveMass(a, b, cp.armA, cp.armB, normal);
     const double kTangent = inverseEffectiveMass(a, b, cp.armA, cp.armB, tangent);
     cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
@@ -309,11 +302,11 @@ void SoftStepSolver::integrateVelocities() {
 // The last substep's impulses applied up front; off, each substep starts from zero.
 void SoftStepSolver::warmStart() {
   for (Constraint& constraint : constraints_) {
-    SubstepBody& a = bodies_[static_cast<size_t>(constraint.bodyA)];
-    SubstepBody& b = bodies_[static_cast<size_t>(constraint.bodyB)];
+    SubstepBody& a = bodies_[constraint.bodyA];
+    SubstepBody& b = bodies_[constraint.bodyB];
     const Vec2 tangent = leftPerpendicular(constraint.normal);
     for (int i = 0; i < constraint.pointCount; ++i) {
-      ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+      ConstraintPoint& cp = constraint.points[i];
       if (!settings_.warmStarting) {
         cp.normalImpulse = 0.0;
         cp.tangentImpulse = 0.0;
@@ -335,15 +328,15 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
   const bool frictionInRelax = settings_.frictionInRelax && settings_.relax;
   double largestChange = 0.0;
   for (Constraint& constraint : constraints_) {
-    SubstepBody& a = bodies_[static_cast<size_t>(constraint.bodyA)];
-    SubstepBody& b = bodies_[static_cast<size_t>(constraint.bodyB)];
+    SubstepBody& a = bodies_[constraint.bodyA];
+    SubstepBody& b = bodies_[constraint.bodyB];
     std::array<double, 2> before = {constraint.points[0].normalImpulse,
                                     constraint.points[1].normalImpulse};
     solveNormals(constraint, a, b, useBias);
     if (!useBias || !frictionInRelax) solveFriction(constraint, a, b);
     for (int i = 0; i < constraint.pointCount; ++i) {
-      const ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
-      const double change = cp.normalImpulse - before[static_cast<size_t>(i)];
+      const ConstraintPoint& cp = constraint.points[i];
+      const double change = cp.normalImpulse - before[i];
       largestChange = std::max(largestChange, std::abs(change));
       if (context.observer && useBias) {
         context.report({SolverEvent::Phase::Velocity, substep, constraint.manifold, i, 0.0, change,
@@ -375,7 +368,7 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SubstepBody& a, Subste
                                   bool useBias) {
   const Vec2 normal = constraint.normal;
   for (int i = 0; i < constraint.pointCount; ++i) {
-    ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+    ConstraintPoint& cp = constraint.points[i];
     const NormalRow row = normalRow(constraint, cp, a, b, useBias);
     const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
     const double impulse =
@@ -392,7 +385,7 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SubstepBody& a, Subste
 void SoftStepSolver::solveFriction(Constraint& constraint, SubstepBody& a, SubstepBody& b) const {
   const Vec2 tangent = leftPerpendicular(constraint.normal);
   for (int i = 0; i < constraint.pointCount; ++i) {
-    ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+    ConstraintPoint& cp = constraint.points[i];
     const double vt = relativeVelocity(a, b, cp.armA, cp.armB).dot(tangent);
     const double limit = constraint.friction * cp.normalImpulse;
     const double total = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
@@ -434,8 +427,8 @@ bool SoftStepSolver::bounces(const ConstraintPoint& cp) const {
 void SoftStepSolver::applyRestitution() {
   for (Constraint& constraint : constraints_) {
     if (constraint.restitution == 0.0) continue;
-    SubstepBody& a = bodies_[static_cast<size_t>(constraint.bodyA)];
-    SubstepBody& b = bodies_[static_cast<size_t>(constraint.bodyB)];
+    SubstepBody& a = bodies_[constraint.bodyA];
+    SubstepBody& b = bodies_[constraint.bodyB];
     const bool bounced =
         applyPairRestitution(constraint, a, b) || applyPointRestitution(constraint, a, b);
     if (!bounced || !settings_.frictionInRestitution) continue;
@@ -449,7 +442,7 @@ bool SoftStepSolver::applyPointRestitution(Constraint& constraint, SubstepBody& 
                                            SubstepBody& b) const {
   bool bounced = false;
   for (int i = 0; i < constraint.pointCount; ++i) {
-    ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+    ConstraintPoint& cp = constraint.points[i];
     if (!bounces(cp)) continue;
     bounced = true;
     const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(constraint.normal);
@@ -491,7 +484,7 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SubstepBody& a
   const Vec2 before(bounceBase(p0), bounceBase(p1));
   Vec2 missing;  // vn − target at each point now
   for (int i = 0; i < 2; ++i) {
-    const ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
+    const ConstraintPoint& cp = constraint.points[i];
     const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(n);
     missing(i) = vn + constraint.restitution * cp.relativeVelocity;
   }
@@ -506,11 +499,11 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SubstepBody& a
 // and the friction state of each point.
 void SoftStepSolver::storeImpulses(const StepContext& context) {
   for (const Constraint& constraint : constraints_) {
-    Manifold& manifold = context.manifolds[static_cast<size_t>(constraint.manifold)];
+    Manifold& manifold = context.manifolds[constraint.manifold];
     if (constraint.atTouch) manifold.normal = constraint.normal;
     for (int i = 0; i < constraint.pointCount; ++i) {
-      const ConstraintPoint& cp = constraint.points[static_cast<size_t>(i)];
-      ContactPoint& point = manifold.points[static_cast<size_t>(i)];
+      const ConstraintPoint& cp = constraint.points[i];
+      ContactPoint& point = manifold.points[i];
       point.normalImpulse = cp.totalNormalImpulse;
       point.tangentImpulse = cp.totalTangentImpulse;
       point.friction = frictionStateOf(cp.normalImpulse, cp.tangentImpulse, manifold.friction, 0.0);
@@ -521,7 +514,7 @@ void SoftStepSolver::storeImpulses(const StepContext& context) {
 }
 
 void SoftStepSolver::finishBodies(const StepContext& context, double h) const {
-  for (size_t i = 0; i < context.bodies.size(); ++i) {
+  for (int i = 0; i < static_cast<int>(context.bodies.size()); ++i) {
     Body& body = context.bodies[i];
     if (!body.isAwake()) continue;
     const SubstepBody& solverBody = bodies_[i];

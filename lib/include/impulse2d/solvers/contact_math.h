@@ -27,6 +27,29 @@ struct SolverBody {
   double inverseInertia = 0.0;
 };
 
+/// A manifold as an iterative solve holds it: which of the step's manifolds, its two bodies, its
+/// normal, its mixed coefficients and how many points it has.
+struct SolverManifold {
+  int manifold = 0;  ///< index into the step's manifolds
+  int bodyA = 0;
+  int bodyB = 0;
+  Vec2 normal = Vec2::Zero();  ///< from A to B
+  double friction = 0.0;
+  double restitution = 0.0;
+  int pointCount = 0;
+
+  /// Takes manifold number `index` of the step.
+  void load(const Manifold& contact, int index) {
+    manifold = index;
+    bodyA = contact.bodyA;
+    bodyB = contact.bodyB;
+    normal = contact.normal;
+    friction = contact.friction;
+    restitution = contact.restitution;
+    pointCount = contact.pointCount;
+  }
+};
+
 /// Velocity of a solver body's material at arm r (any type with velocity and angularVelocity).
 template <typename Velocities>
 Vec2 pointVelocity(const Velocities& body, const Vec2& r) {
@@ -53,7 +76,7 @@ void applyPairImpulse(Velocities& a, Velocities& b, const Vec2& rA, const Vec2& 
 inline void loadSolverBodies(const std::vector<Body>& bodies,
                              std::vector<SolverBody>& solverBodies) {
   solverBodies.resize(bodies.size());
-  for (size_t i = 0; i < bodies.size(); ++i) {
+  for (int i = 0; i < static_cast<int>(bodies.size()); ++i) {
     const Body& body = bodies[i];
     solverBodies[i] = {body.velocity, body.angularVelocity, body.inverseMass, body.inverseInertia};
   }
@@ -142,10 +165,9 @@ Mat2 normalCouplingMatrix(const Masses& a, const Masses& b, const Vec2& normal,
   Mat2 k;
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
-      k(i, j) =
-          a.inverseMass + b.inverseMass +
-          a.inverseInertia * cross(armsA[size_t(i)], normal) * cross(armsA[size_t(j)], normal) +
-          b.inverseInertia * cross(armsB[size_t(i)], normal) * cross(armsB[size_t(j)], normal);
+      k(i, j) = a.inverseMass + b.inverseMass +
+                a.inverseInertia * cross(armsA[i], normal) * cross(armsA[j], normal) +
+                b.inverseInertia * cross(armsB[i], normal) * cross(armsB[j], normal);
     }
   }
   return k;
@@ -174,7 +196,7 @@ void applyContactImpulse(std::vector<Body>& bodies, const Manifold& manifold, in
 /// anchor on B, along the normal (> 0 overlap).
 inline double currentPenetration(const Body& a, const Body& b, const Manifold& manifold,
                                  int point) {
-  const ContactPoint& contact = manifold.points[static_cast<size_t>(point)];
+  const ContactPoint& contact = manifold.points[point];
   return (a.toWorld(contact.anchorA) - b.toWorld(contact.anchorB)).dot(manifold.normal);
 }
 

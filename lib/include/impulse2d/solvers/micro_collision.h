@@ -109,6 +109,8 @@ class MicroCollisionSolver : public ContactSolver {
     /// the same for the two normals alone, for a frictionless pair
     Eigen::Matrix2d inverseNormalMatrix;
   };
+  /// The two states of a pair, in manifold order.
+  using PointsOfPair = std::array<PointState*, 2>;
 
   void prepare(const StepContext& context);
   void loadSolverBodies(const StepContext& context);
@@ -129,6 +131,13 @@ class MicroCollisionSolver : public ContactSolver {
   void preparePairs();
   void invertPairContactMatrix(PointPair& pair) const;
   bool applyPairChange(const StepContext& context, const PointState& worst, int iteration);
+  bool pairNeedsChange(const PointsOfPair& points, bool bounce, std::array<Vec2, 2>& desired) const;
+  bool newPairTotals(const PointPair& pair, const PointsOfPair& points,
+                     const std::array<Vec2, 2>& desired, double friction, Eigen::Vector3d& after,
+                     bool& sliding) const;
+  std::array<Vec2, 2> applyPairTotals(Manifold& manifold, const PointsOfPair& points,
+                                      const Eigen::Vector3d& after, FrictionState friction,
+                                      bool bounce);
   bool slidingPairTotals(const PointPair& pair, const Eigen::Vector3d& before,
                          const Eigen::Vector3d& change, double slide, Eigen::Vector3d& after) const;
   void afterImpulse(const StepContext& context, const PointState& state);

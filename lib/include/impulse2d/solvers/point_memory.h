@@ -26,7 +26,7 @@ class PointMemory {
   /// Looks up the state each point of `manifolds` ended its last solve with.
   void recall(const std::vector<Manifold>& manifolds) {
     current_.assign(manifolds.size(), {State{}, State{}});
-    for (size_t m = 0; m < manifolds.size(); ++m) {
+    for (int m = 0; m < static_cast<int>(manifolds.size()); ++m) {
       const Manifold& manifold = manifolds[m];
       auto entry = std::lower_bound(entries_.begin(), entries_.end(), manifold, pairBefore);
       for (; entry != entries_.end() && samePair(*entry, manifold); ++entry) {
@@ -48,7 +48,7 @@ class PointMemory {
   /// sleep (or are static); `manifolds` are recall's.
   void remember(const std::vector<Manifold>& manifolds, const std::vector<Body>& bodies) {
     next_.clear();
-    for (size_t m = 0; m < manifolds.size(); ++m) {
+    for (int m = 0; m < static_cast<int>(manifolds.size()); ++m) {
       const Manifold& manifold = manifolds[m];
       for (int i = 0; i < manifold.pointCount; ++i) {
         next_.push_back({manifold.bodyA, manifold.bodyB, manifold.points[i].id, current_[m][i]});

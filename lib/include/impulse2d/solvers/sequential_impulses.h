@@ -57,14 +57,8 @@ class SequentialImpulseSolver : public ContactSolver {
   };
   /// Per manifold: its bodies and normal, its points in states_, and whether its normals are
   /// solved as a block.
-  struct ManifoldState {
-    int manifold = 0;
-    int bodyA = 0;
-    int bodyB = 0;
-    Vec2 normal = Vec2::Zero();
-    double friction = 0.0;
+  struct ManifoldState : SolverManifold {
     int firstPoint = 0;  ///< index of its first point in states_
-    int pointCount = 0;
     bool block = false;
     Mat2 normalCoupling = Mat2::Zero();   ///< K, when block
     Mat2 inverseCoupling = Mat2::Zero();  ///< K⁻¹, when block
@@ -123,12 +117,11 @@ class SequentialImpulseSolver : public ContactSolver {
   double solveFriction(const ManifoldState& manifold, PointState& point, BodyPair& bodies,
                        double normalImpulseThisSweep);
   BodyPair loadBodies(const ManifoldState& manifold) const {
-    return {solverBodies_[static_cast<size_t>(manifold.bodyA)],
-            solverBodies_[static_cast<size_t>(manifold.bodyB)]};
+    return {solverBodies_[manifold.bodyA], solverBodies_[manifold.bodyB]};
   }
   void storeBodies(const ManifoldState& manifold, const BodyPair& bodies) {
-    solverBodies_[static_cast<size_t>(manifold.bodyA)] = bodies.a;
-    solverBodies_[static_cast<size_t>(manifold.bodyB)] = bodies.b;
+    solverBodies_[manifold.bodyA] = bodies.a;
+    solverBodies_[manifold.bodyB] = bodies.b;
   }
   double normalImpulseChange(PointState& point, double impulse) const;
   double tangentImpulseChange(PointState& point, double impulse, double friction,

@@ -86,14 +86,7 @@ class SoftStepSolver : public ContactSolver {
     double relativeVelocity = 0.0;     ///< vn before the step, for restitution
     Softness softness;                 ///< this point's spring
   };
-  struct Constraint {
-    int manifold = 0;
-    int bodyA = 0;
-    int bodyB = 0;
-    Vec2 normal = Vec2::Zero();
-    double friction = 0.0;
-    double restitution = 0.0;
-    int pointCount = 0;
+  struct Constraint : SolverManifold {
     /// The arms that turn with their bodies within the step: not a circle's (roundSurfaces).
     bool turnArmA = true;
     bool turnArmB = true;
