@@ -35,14 +35,13 @@ Eigen::VectorXd freeVelocity(const IslandProblem& problem) {
   const int count = static_cast<int>(problem.points.size());
   Eigen::VectorXd free(2 * count);
   for (int i = 0; i < count; ++i) {
-    const IslandPoint& point = problem.points[static_cast<size_t>(i)];
+    const IslandPoint& point = problem.points[i];
     for (int axis = 0; axis < 2; ++axis) {
-      double v = point.staticVelocity[static_cast<size_t>(axis)];
+      double v = point.staticVelocity[axis];
       for (int side = 0; side < 2; ++side) {
-        const int body = point.body[static_cast<size_t>(side)];
+        const int body = point.body[side];
         if (body < 0) continue;
-        v += point.jacobian[static_cast<size_t>(axis)][static_cast<size_t>(side)].dot(
-            problem.velocity.segment<3>(3 * body));
+        v += point.jacobian[axis][side].dot(problem.velocity.segment<3>(3 * body));
       }
       free(2 * i + axis) = v;
     }
@@ -53,7 +52,7 @@ Eigen::VectorXd freeVelocity(const IslandProblem& problem) {
 
 /// The point of impulse k (2 per point: λn, λt).
 const IslandPoint& pointOf(const IslandProblem& problem, int k) {
-  return problem.points[static_cast<size_t>(k / 2)];
+  return problem.points[k / 2];
 }
 
 /// The bodies' velocity change M⁻¹Jᵀλ from the points' impulses λ (2 per point).
@@ -107,8 +106,7 @@ namespace {
 Eigen::VectorXd projectedGuess(const IslandProblem& problem) {
   Eigen::VectorXd impulses = problem.guess;
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
-    const double limit =
-        problem.points[static_cast<size_t>(i)].friction * std::max(impulses(2 * i), 0.0);
+    const double limit = problem.points[i].friction * std::max(impulses(2 * i), 0.0);
     impulses(2 * i) = std::max(impulses(2 * i), 0.0);
     impulses(2 * i + 1) = std::clamp(impulses(2 * i + 1), -limit, limit);
   }
@@ -125,7 +123,7 @@ bool gaussSeidelSweep(const IslandProblem& problem, const Eigen::VectorXd& diago
                       Eigen::VectorXd& impulses, Eigen::VectorXd& velocity) {
   bool changed = false;
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
-    const double friction = problem.points[static_cast<size_t>(i)].friction;
+    const double friction = problem.points[i].friction;
     const ContactState before = stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), friction);
     for (int axis = 0; axis < 2; ++axis) {
       const int k = 2 * i + axis;
@@ -178,21 +176,19 @@ class Neighbours {
 
   explicit Neighbours(const IslandProblem& problem) {
     const int count = static_cast<int>(problem.points.size());
-    std::vector<std::vector<int>> pointsOfBody(static_cast<size_t>(problem.velocity.size() / 3));
+    std::vector<std::vector<int>> pointsOfBody(problem.velocity.size() / 3);
     for (int i = 0; i < count; ++i) {
-      for (const int body : problem.points[static_cast<size_t>(i)].body) {
-        if (body >= 0) pointsOfBody[static_cast<size_t>(body)].push_back(i);
+      for (const int body : problem.points[i].body) {
+        if (body >= 0) pointsOfBody[body].push_back(i);
       }
     }
-    first_.reserve(static_cast<size_t>(count) + 1);
+    first_.reserve(count + 1);
     first_.push_back(0);
     const std::vector<int> none;
     for (int i = 0; i < count; ++i) {
-      const std::array<int, 2>& bodies = problem.points[static_cast<size_t>(i)].body;
-      const std::vector<int>& a =
-          bodies[0] >= 0 ? pointsOfBody[static_cast<size_t>(bodies[0])] : none;
-      const std::vector<int>& b =
-          bodies[1] >= 0 ? pointsOfBody[static_cast<size_t>(bodies[1])] : none;
+      const std::array<int, 2>& bodies = problem.points[i].body;
+      const std::vector<int>& a = bodies[0] >= 0 ? pointsOfBody[bodies[0]] : none;
+      const std::vector<int>& b = bodies[1] >= 0 ? pointsOfBody[bodies[1]] : none;
       mergeNext(problem, i, a, b);
       first_.push_back(static_cast<int>(couplings_.size()));
     }
@@ -200,7 +196,7 @@ class Neighbours {
 
   Range of(int i) const {
     const Coupling* all = couplings_.data();
-    return {all + first_[static_cast<size_t>(i)], all + first_[static_cast<size_t>(i) + 1]};
+    return {all + first_[i], all + first_[i + 1]};
   }
 
  private:
@@ -208,21 +204,23 @@ class Neighbours {
   /// (list b), both in increasing order, merged; a point in both shares both bodies.
   void mergeNext(const IslandProblem& problem, int i, const std::vector<int>& a,
                  const std::vector<int>& b) {
-    const std::array<int, 2>& bodies = problem.points[static_cast<size_t>(i)].body;
-    size_t ia = 0;
-    size_t ib = 0;
-    while (ia < a.size() || ib < b.size()) {
-      const int j = std::min(ia < a.size() ? a[ia] : INT_MAX, ib < b.size() ? b[ib] : INT_MAX);
+    const std::array<int, 2>& bodies = problem.points[i].body;
+    const int countA = static_cast<int>(a.size());
+    const int countB = static_cast<int>(b.size());
+    int ia = 0;
+    int ib = 0;
+    while (ia < countA || ib < countB) {
+      const int j = std::min(ia < countA ? a[ia] : INT_MAX, ib < countB ? b[ib] : INT_MAX);
       Coupling c;
       c.point = j;
-      const std::array<int, 2>& other = problem.points[static_cast<size_t>(j)].body;
+      const std::array<int, 2>& other = problem.points[j].body;
       for (int side = 0; side < 2; ++side) {
-        size_t& cursor = side == 0 ? ia : ib;
+        int& cursor = side == 0 ? ia : ib;
         const std::vector<int>& list = side == 0 ? a : b;
-        if (cursor >= list.size() || list[cursor] != j) continue;
+        if (cursor >= static_cast<int>(list.size()) || list[cursor] != j) continue;
         ++cursor;
-        const int rowSide = other[0] == bodies[static_cast<size_t>(side)] ? 0 : 1;
-        c.sides[static_cast<size_t>(c.shared++)] = {rowSide, side};
+        const int rowSide = other[0] == bodies[side] ? 0 : 1;
+        c.sides[c.shared++] = {rowSide, side};
       }
       couplings_.push_back(c);
     }
@@ -250,7 +248,7 @@ class GuessSystem final : public PosedSystem {
     int rows = 0;
     for (int i = 0; i < pointCount(); ++i) {
       if (rowsOf(i) == 0) continue;
-      firstRow_[static_cast<size_t>(i)] = rows;
+      firstRow_[i] = rows;
       rows += rowsOf(i);
     }
     rhs_.resize(rows);
@@ -309,7 +307,7 @@ class GuessSystem final : public PosedSystem {
   Eigen::VectorXd impulses(const Eigen::VectorXd& x) const {
     Eigen::VectorXd all = Eigen::VectorXd::Zero(2 * pointCount());
     for (int i = 0; i < pointCount(); ++i) {
-      const ContactState state = states_[static_cast<size_t>(i)];
+      const ContactState state = states_[i];
       if (state == ContactState::Separated) continue;
       all(2 * i) = x(row(i, 0));
       all(2 * i + 1) = state == ContactState::Sticking
@@ -320,12 +318,12 @@ class GuessSystem final : public PosedSystem {
   }
 
  private:
-  const IslandPoint& point(int i) const { return problem_.points[static_cast<size_t>(i)]; }
+  const IslandPoint& point(int i) const { return problem_.points[i]; }
   int pointCount() const { return static_cast<int>(problem_.points.size()); }
-  int row(int i, int axis) const { return firstRow_[static_cast<size_t>(i)] + axis; }
+  int row(int i, int axis) const { return firstRow_[i] + axis; }
   /// The unknowns (and rows) of point i: none if separated, λn if sliding, λn and λt if sticking.
   int rowsOf(int i) const {
-    const ContactState state = states_[static_cast<size_t>(i)];
+    const ContactState state = states_[i];
     if (state == ContactState::Separated) return 0;
     return state == ContactState::Sticking ? 2 : 1;
   }
@@ -338,11 +336,11 @@ class GuessSystem final : public PosedSystem {
   /// direction, Jᵀ along the axis, or Jnᵀ ∓ μJtᵀ for a sliding point's λn; one per side.
   std::array<Eigen::Vector3d, 2> unitChange(int i, int axis) const {
     const IslandPoint& p = point(i);
-    const ContactState state = states_[static_cast<size_t>(i)];
+    const ContactState state = states_[i];
     std::array<Eigen::Vector3d, 2> change{};
-    for (size_t side = 0; side < 2; ++side) {
+    for (int side = 0; side < 2; ++side) {
       if (p.body[side] < 0) continue;
-      Eigen::Vector3d direction = p.jacobian[static_cast<size_t>(axis)][side];
+      Eigen::Vector3d direction = p.jacobian[axis][side];
       if (state != ContactState::Sticking) {
         direction -= slidingSign(state) * p.friction * p.jacobian[1][side];
       }
@@ -360,9 +358,8 @@ class GuessSystem final : public PosedSystem {
       for (int r = 0; r < rowsOf(c.point); ++r) {
         double value = c.point == i && r == axis ? shift_(row(i, axis)) : 0.0;
         for (int k = 0; k < c.shared; ++k) {
-          const auto [rowSide, side] = c.sides[static_cast<size_t>(k)];
-          value += rowPoint.jacobian[static_cast<size_t>(r)][static_cast<size_t>(rowSide)].dot(
-              change[static_cast<size_t>(side)]);
+          const auto [rowSide, side] = c.sides[k];
+          value += rowPoint.jacobian[r][rowSide].dot(change[side]);
         }
         column.add(row(c.point, r), value);
       }
@@ -378,7 +375,7 @@ class GuessSystem final : public PosedSystem {
     for (int i = 0; i < pointCount(); ++i) {
       for (int axis = 0; axis < rowsOf(i); ++axis) {
         const std::array<Eigen::Vector3d, 2> change = unitChange(i, axis);
-        for (size_t side = 0; side < 2; ++side) {
+        for (int side = 0; side < 2; ++side) {
           const int body = point(i).body[side];
           if (body >= 0) reach.segment<3>(3 * body) += change[side].cwiseAbs();
         }
@@ -388,11 +385,10 @@ class GuessSystem final : public PosedSystem {
     for (int i = 0; i < pointCount(); ++i) {
       for (int axis = 0; axis < rowsOf(i); ++axis) {
         double sum = shift_(row(i, axis));
-        for (size_t side = 0; side < 2; ++side) {
+        for (int side = 0; side < 2; ++side) {
           const int body = point(i).body[side];
           if (body < 0) continue;
-          sum += point(i).jacobian[static_cast<size_t>(axis)][side].cwiseAbs().dot(
-              reach.segment<3>(3 * body));
+          sum += point(i).jacobian[axis][side].cwiseAbs().dot(reach.segment<3>(3 * body));
         }
         bound = std::max(bound, sum);
       }
@@ -420,11 +416,11 @@ std::vector<Violation> violations(const IslandProblem& problem,
                                   bool enterSliding) {
   std::vector<Violation> found;
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
-    const double mu = problem.points[static_cast<size_t>(i)].friction;
+    const double mu = problem.points[i].friction;
     const double normal = impulses(2 * i);
     const double tangent = impulses(2 * i + 1);
     const double slip = velocity(2 * i + 1) / diagonal(2 * i + 1);
-    const ContactState state = states[static_cast<size_t>(i)];
+    const ContactState state = states[i];
     const ContactState touching = mu > 0.0 ? ContactState::Sticking : ContactState::SlidingPositive;
     if (state == ContactState::Separated) {
       const double closing = -velocity(2 * i) / diagonal(2 * i);
@@ -475,29 +471,29 @@ class FlipRule {
       bestFound_ = found;
       std::sort(bestFound_.begin(), bestFound_.end(),
                 [](const Violation& x, const Violation& y) { return x.amount > y.amount; });
-      flip(found, found.size(), states);
+      flip(found, count, states);
       return;
     }
     ++failures_;
     if (backtrack_) {
-      const bool halvings = failures_ < std::numeric_limits<size_t>::digits;
-      const size_t share = halvings ? bestFound_.size() >> failures_ : 0;
+      const bool halvings = failures_ < std::numeric_limits<int>::digits;
+      const int share = halvings ? static_cast<int>(bestFound_.size()) >> failures_ : 0;
       if (share > 0) {
         states = bestStates_;
         flip(bestFound_, share, states);
         return;
       }
     } else if (failures_ <= blockFailures_) {
-      flip(found, found.size(), states);
+      flip(found, count, states);
       return;
     }
     flipWorst(found, states);
   }
 
  private:
-  static void flip(const std::vector<Violation>& found, size_t count,
+  static void flip(const std::vector<Violation>& found, int count,
                    std::vector<ContactState>& states) {
-    for (size_t k = 0; k < count; ++k) states[static_cast<size_t>(found[k].point)] = found[k].next;
+    for (int k = 0; k < count; ++k) states[found[k].point] = found[k].next;
   }
 
   /// One at a time, the worst first; with backtracking, not the point flipped just before (on a
@@ -508,7 +504,7 @@ class FlipRule {
       const bool tabu = backtrack_ && v.point == lastFlipped_ && found.size() > 1;
       if (!tabu && (worst == nullptr || v.amount > worst->amount)) worst = &v;
     }
-    states[static_cast<size_t>(worst->point)] = worst->next;
+    states[worst->point] = worst->next;
     lastFlipped_ = worst->point;
   }
 
@@ -539,14 +535,14 @@ Guess firstGuess(const IslandProblem& problem, const Eigen::VectorXd& free,
   Guess guess{std::vector<ContactState>(problem.points.size()),
               Eigen::VectorXd::Zero(problem.guess.size())};
   for (int i = 0; i < static_cast<int>(problem.points.size()); ++i) {
-    const IslandPoint& point = problem.points[static_cast<size_t>(i)];
+    const IslandPoint& point = problem.points[i];
     const Eigen::VectorXd& impulses = startsFromLastStep(point, settings) ? problem.guess : swept;
     if (settings.centreOnGuess) guess.impulses.segment<2>(2 * i) = impulses.segment<2>(2 * i);
     const bool carried =
         startsFromLastStep(point, settings) && point.lastState != ContactState::Unknown;
-    guess.states[static_cast<size_t>(i)] =
-        carried ? point.lastState
-                : stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), point.friction);
+    guess.states[i] = carried
+                          ? point.lastState
+                          : stateOfImpulses(impulses(2 * i), impulses(2 * i + 1), point.friction);
   }
   return guess;
 }
@@ -611,6 +607,48 @@ std::pair<double, double> givens(double a, double b) {
   return r > 0.0 ? std::pair{a / r, b / r} : std::pair{1.0, 0.0};
 }
 
+/// GMRES's small least-squares problem min |β e₁ − H y|, H the Hessenberg matrix the Arnoldi
+/// process builds a column per round, kept upper triangular by Givens rotations; g is β e₁
+/// rotated alike, so |g(j + 1)| is the residual's norm after round j.
+struct GivensLeastSquares {
+  GivensLeastSquares(int rounds, double beta)
+      : hessenberg(Eigen::MatrixXd::Zero(rounds + 1, rounds)),
+        g(Eigen::VectorXd::Zero(rounds + 1)) {
+    g(0) = beta;
+  }
+
+  /// Turns column j of H upper triangular: the earlier rotations, then a new one that zeroes its
+  /// entry below the diagonal, applied to g too.
+  void rotateColumn(int j) {
+    for (int i = 0; i < j; ++i) {
+      const auto [c, s] = rotations[i];
+      const double top = hessenberg(i, j);
+      hessenberg(i, j) = c * top + s * hessenberg(i + 1, j);
+      hessenberg(i + 1, j) = -s * top + c * hessenberg(i + 1, j);
+    }
+    rotations.push_back(givens(hessenberg(j, j), hessenberg(j + 1, j)));
+    const auto [c, s] = rotations.back();
+    hessenberg(j, j) = c * hessenberg(j, j) + s * hessenberg(j + 1, j);
+    hessenberg(j + 1, j) = 0.0;
+    g(j + 1) = -s * g(j);
+    g(j) = c * g(j);
+  }
+
+  /// The residual's norm after round j.
+  double residualNorm(int j) const { return std::abs(g(j + 1)); }
+
+  /// y of rounds 0..j: the rotated problem's triangular solve.
+  Eigen::VectorXd solution(int j) const {
+    return hessenberg.topLeftCorner(j + 1, j + 1)
+        .triangularView<Eigen::Upper>()
+        .solve(g.head(j + 1));
+  }
+
+  Eigen::MatrixXd hessenberg;                        ///< H, its columns rotated so far
+  std::vector<std::pair<double, double>> rotations;  ///< (c, s) of each column's rotation
+  Eigen::VectorXd g;                                 ///< β e₁, rotated alike
+};
+
 }  // namespace
 
 /// x with A x = rhs by GMRES preconditioned on the right by the kept factors K: from x = K⁻¹rhs,
@@ -626,36 +664,22 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
   if (residual.cwiseAbs().maxCoeff() <= tolerance) return true;
   std::vector<Eigen::VectorXd> basis{residual / beta};
   std::vector<Eigen::VectorXd> preconditioned;
-  Eigen::MatrixXd hessenberg = Eigen::MatrixXd::Zero(rounds + 1, rounds);
-  std::vector<std::pair<double, double>> rotations;
-  Eigen::VectorXd g = Eigen::VectorXd::Zero(rounds + 1);
-  g(0) = beta;
+  GivensLeastSquares leastSquares(rounds, beta);
+  Eigen::MatrixXd& hessenberg = leastSquares.hessenberg;
   for (int j = 0; j < rounds; ++j) {
     ++extraSolves_;
-    preconditioned.push_back(factors_->solve(basis[static_cast<size_t>(j)]));
+    preconditioned.push_back(factors_->solve(basis[j]));
     Eigen::VectorXd w = system_->times(preconditioned.back());
     for (int i = 0; i <= j; ++i) {
-      hessenberg(i, j) = w.dot(basis[static_cast<size_t>(i)]);
-      w -= hessenberg(i, j) * basis[static_cast<size_t>(i)];
+      hessenberg(i, j) = w.dot(basis[i]);
+      w -= hessenberg(i, j) * basis[i];
     }
     hessenberg(j + 1, j) = w.norm();
     basis.push_back(w / hessenberg(j + 1, j));
-    for (int i = 0; i < j; ++i) {
-      const auto [c, s] = rotations[static_cast<size_t>(i)];
-      const double top = hessenberg(i, j);
-      hessenberg(i, j) = c * top + s * hessenberg(i + 1, j);
-      hessenberg(i + 1, j) = -s * top + c * hessenberg(i + 1, j);
-    }
-    rotations.push_back(givens(hessenberg(j, j), hessenberg(j + 1, j)));
-    const auto [c, s] = rotations.back();
-    hessenberg(j, j) = c * hessenberg(j, j) + s * hessenberg(j + 1, j);
-    hessenberg(j + 1, j) = 0.0;
-    g(j + 1) = -s * g(j);
-    g(j) = c * g(j);
-    if (std::abs(g(j + 1)) > tolerance) continue;
-    const Eigen::VectorXd y =
-        hessenberg.topLeftCorner(j + 1, j + 1).triangularView<Eigen::Upper>().solve(g.head(j + 1));
-    for (int i = 0; i <= j; ++i) x += y(i) * preconditioned[static_cast<size_t>(i)];
+    leastSquares.rotateColumn(j);
+    if (leastSquares.residualNorm(j) > tolerance) continue;
+    const Eigen::VectorXd y = leastSquares.solution(j);
+    for (int i = 0; i <= j; ++i) x += y(i) * preconditioned[i];
     return (rhs - system_->times(x)).cwiseAbs().maxCoeff() <= tolerance;
   }
   return false;
@@ -709,63 +733,117 @@ ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double
   return ContactState::Sticking;
 }
 
-ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSettings& settings,
-                               KeptFactorization& kept) {
-  const Eigen::VectorXd diagonal = delassusDiagonal(problem);
-  const Eigen::VectorXd free = freeVelocity(problem);
-  ActiveSetAnswer answer;
-  if (!free.allFinite() || !diagonal.allFinite()) {
-    answer.failure = "active set: the problem is not finite (a velocity or mass overflowed)";
-    return answer;
+namespace {
+
+/// How often each set of states was solved: one solved more than kVisitsBeforeCycling times
+/// means the flips cycle.
+class VisitedStates {
+ public:
+  /// Counts a solve of `states`; whether the flips now cycle.
+  bool cycles(const std::vector<ContactState>& states) {
+    std::string key(states.size(), '\0');
+    for (int i = 0; i < static_cast<int>(states.size()); ++i) key[i] = static_cast<char>(states[i]);
+    return ++visits_[key] > kVisitsBeforeCycling;
   }
-  const Guess guess = firstGuess(problem, free, diagonal, settings);
+
+ private:
+  std::unordered_map<std::string, int> visits_;  ///< by the states, one character per point
+};
+
+/// The impulses of one guess's system solved on `kept` (on its kept factors if `reuse`), the
+/// regularization centred on `centre`; none if it is singular (a factorization failed, or the
+/// answer is not finite).
+std::optional<Eigen::VectorXd> solveGuessSystem(const GuessSystem& system,
+                                                const Eigen::VectorXd& centre, bool reuse,
+                                                const ActiveSetSettings& settings,
+                                                KeptFactorization& kept) {
+  Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(system.size());
+  const bool prepared = system.size() == 0 || kept.prepare(system, reuse, settings);
+  if (prepared && system.size() > 0) unknowns = kept.solve(system.rhs(), system.unknownsOf(centre));
+  if (!prepared || !unknowns.allFinite()) return std::nullopt;
+  return system.impulses(unknowns);
+}
+
+/// What the answer breaks (violations), measured against flipTolerance of its impulse scale.
+std::vector<Violation> violationsOfAnswer(const IslandProblem& problem,
+                                          const std::vector<ContactState>& states,
+                                          const Eigen::VectorXd& impulses,
+                                          const Eigen::VectorXd& free,
+                                          const Eigen::VectorXd& diagonal,
+                                          const ActiveSetSettings& settings) {
+  const Eigen::VectorXd velocity = free + delassusTimes(problem, impulses);
+  const double tolerance = settings.flipTolerance * impulseScale(impulses, free, diagonal);
+  return violations(problem, states, impulses, velocity, diagonal, tolerance,
+                    settings.enterSliding);
+}
+
+/// The answer so far, failed for `reason`.
+ActiveSetAnswer failed(ActiveSetAnswer answer, const std::string& reason) {
+  answer.failure = reason;
+  return answer;
+}
+
+/// The answer so far, solved in `states`.
+ActiveSetAnswer solved(ActiveSetAnswer answer, const std::vector<ContactState>& states) {
+  answer.solved = true;
+  answer.states = states;
+  return answer;
+}
+
+/// From the first guess, each guess of the states solved and its violators flipped, until an
+/// answer breaks nothing; failed if the flips cycle, a system is singular or the factorization
+/// limit is reached.
+ActiveSetAnswer flipUntilSolved(const IslandProblem& problem, const Eigen::VectorXd& free,
+                                const Eigen::VectorXd& diagonal, const Guess& guess,
+                                const ActiveSetSettings& settings, KeptFactorization& kept) {
+  ActiveSetAnswer answer;
   std::vector<ContactState> states = guess.states;
   std::optional<Neighbours> neighbours;  // W's pattern, built at the first factorization
   FlipRule flips(settings);
   const int factorizationsBefore = kept.factorizations();
-  std::unordered_map<std::string, int> visits;  // how often each set of states was solved
+  VisitedStates visited;
   // Only the step's first system is solved on kept factors: after a flip, the flipped rows
   // differ from every earlier system (a block flip changes many), and the path of the flips
   // stays the one fresh factorizations take.
   bool firstSystem = true;
   while (answer.factorizations < settings.maxFactorizations) {
-    std::string key(states.size(), '\0');
-    for (size_t i = 0; i < states.size(); ++i) key[i] = static_cast<char>(states[i]);
-    if (++visits[key] > kVisitsBeforeCycling) {
-      answer.failure = "active set: cycling (the same states solved " +
-                       std::to_string(kVisitsBeforeCycling + 1) + " times by factorization " +
-                       std::to_string(answer.factorizations) + ")";
-      return answer;
+    if (visited.cycles(states)) {
+      return failed(answer, "active set: cycling (the same states solved " +
+                                std::to_string(kVisitsBeforeCycling + 1) +
+                                " times by factorization " + std::to_string(answer.factorizations) +
+                                ")");
     }
     const GuessSystem system(problem, states, diagonal, free, settings.regularization, neighbours);
-    Eigen::VectorXd unknowns = Eigen::VectorXd::Zero(system.size());
-    const bool prepared =
-        system.size() == 0 || kept.prepare(system, firstSystem && settings.keepFactors, settings);
+    const std::optional<Eigen::VectorXd> impulses = solveGuessSystem(
+        system, guess.impulses, firstSystem && settings.keepFactors, settings, kept);
     firstSystem = false;
-    if (prepared && system.size() > 0) {
-      unknowns = kept.solve(system.rhs(), system.unknownsOf(guess.impulses));
-    }
     answer.factorizations = kept.factorizations() - factorizationsBefore;
-    if (!prepared || !unknowns.allFinite()) {
-      answer.failure = "active set: singular system at factorization " +
-                       std::to_string(answer.factorizations) + " (" + kept.lastError() + ")";
-      return answer;
+    if (!impulses) {
+      return failed(answer, "active set: singular system at factorization " +
+                                std::to_string(answer.factorizations) + " (" + kept.lastError() +
+                                ")");
     }
-    answer.impulses = system.impulses(unknowns);
-    const Eigen::VectorXd velocity = free + delassusTimes(problem, answer.impulses);
-    const double tolerance = settings.flipTolerance * impulseScale(answer.impulses, free, diagonal);
-    const std::vector<Violation> found = violations(problem, states, answer.impulses, velocity,
-                                                    diagonal, tolerance, settings.enterSliding);
-    if (found.empty()) {
-      answer.solved = true;
-      answer.states = states;
-      return answer;
-    }
+    answer.impulses = *impulses;
+    const std::vector<Violation> found =
+        violationsOfAnswer(problem, states, answer.impulses, free, diagonal, settings);
+    if (found.empty()) return solved(answer, states);
     flips.apply(found, states);
   }
-  answer.failure = "active set: factorization limit of " +
-                   std::to_string(settings.maxFactorizations) + " reached";
-  return answer;
+  return failed(answer, "active set: factorization limit of " +
+                            std::to_string(settings.maxFactorizations) + " reached");
+}
+
+}  // namespace
+
+ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSettings& settings,
+                               KeptFactorization& kept) {
+  const Eigen::VectorXd diagonal = delassusDiagonal(problem);
+  const Eigen::VectorXd free = freeVelocity(problem);
+  if (!free.allFinite() || !diagonal.allFinite()) {
+    return failed({}, "active set: the problem is not finite (a velocity or mass overflowed)");
+  }
+  return flipUntilSolved(problem, free, diagonal, firstGuess(problem, free, diagonal, settings),
+                         settings, kept);
 }
 
 }  // namespace impulse2d

@@ -29,8 +29,8 @@ Eigen::VectorXd appliedImpulses(const std::vector<Manifold>& manifolds) {
   int row = 0;
   for (const Manifold& manifold : manifolds) {
     for (int i = 0; i < manifold.pointCount; ++i, row += 2) {
-      impulses(row) = manifold.points[static_cast<size_t>(i)].normalImpulse;
-      impulses(row + 1) = manifold.points[static_cast<size_t>(i)].tangentImpulse;
+      impulses(row) = manifold.points[i].normalImpulse;
+      impulses(row + 1) = manifold.points[i].tangentImpulse;
     }
   }
   return impulses;

@@ -47,7 +47,7 @@ void pivot(LemkeTableau& tableau, const Eigen::VectorXd& direction, int row, int
   tableau.basicValues -= pivotValue * direction;
   tableau.basisInverse.row(row) = pivotRow;
   tableau.basicValues(row) = pivotValue;
-  tableau.basicVariable[static_cast<size_t>(row)] = entering;
+  tableau.basicVariable[row] = entering;
 }
 
 /// A ratio test reads only finite numbers: an overflowed tableau (huge velocities against tiny
@@ -88,7 +88,7 @@ int leavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
       candidates, [&](int row) { return tableau.basicValues(row) / direction(row); },
       options.tieTolerance);
   for (int row : candidates) {
-    if (tableau.basicVariable[static_cast<size_t>(row)] == artificial) return row;
+    if (tableau.basicVariable[row] == artificial) return row;
   }
   for (int column = 0; candidates.size() > 1 && column < direction.size(); ++column) {
     candidates = smallestRatios(
@@ -120,7 +120,7 @@ int harrisLeavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& directi
     if (!(direction(row) > smallestPivot) || tableau.basicValues(row) / direction(row) > bound) {
       continue;
     }
-    if (tableau.basicVariable[static_cast<size_t>(row)] == artificial) return row;
+    if (tableau.basicVariable[row] == artificial) return row;
     if (chosen < 0 || direction(row) > direction(chosen)) chosen = row;
   }
   return chosen;
@@ -136,6 +136,37 @@ int firstLeavingRow(const Eigen::VectorXd& q, const Eigen::VectorXd& covering) {
   return row;
 }
 
+/// The row whose variable leaves next, by the path's ratio test; −1 on a ray.
+int nextLeavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
+                   const LemkePath& path, const LemkeSettings& options, int artificial) {
+  return path.ratioTest == RatioTest::Harris
+             ? harrisLeavingRow(tableau, direction, options, artificial)
+             : leavingRow(tableau, direction, options, artificial);
+}
+
+/// The start B = I: every w basic, at its value in q.
+LemkeTableau startingTableau(const Eigen::VectorXd& q) {
+  const int n = static_cast<int>(q.size());
+  LemkeTableau tableau{Eigen::MatrixXd::Identity(n, n), q, std::vector<int>(n)};
+  for (int i = 0; i < n; ++i) tableau.basicVariable[i] = i;
+  return tableau;
+}
+
+/// The most pivots a path on n variables may take: maxPivotsPerVariable each, at most maxPivots.
+int pivotLimitOf(const LemkeSettings& options, int n) {
+  return static_cast<int>(
+      std::min<long>(options.maxPivots, static_cast<long>(options.maxPivotsPerVariable) * n));
+}
+
+/// The answer z = 0, w = q of a problem with q ≥ 0: no pivot needed.
+LcpSolution zeroSolution(const Eigen::VectorXd& q) {
+  LcpSolution solution;
+  solution.z = Eigen::VectorXd::Zero(q.size());
+  solution.w = q;
+  solution.solved = true;
+  return solution;
+}
+
 LcpSolution failed(LcpSolution solution, const std::string& reason) {
   solution.solved = false;
   solution.failure = reason;
@@ -146,7 +177,7 @@ LcpSolution failed(LcpSolution solution, const std::string& reason) {
 Eigen::VectorXd impulsesOf(const LemkeTableau& tableau, const Eigen::VectorXd& values, int n) {
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
   for (int row = 0; row < n; ++row) {
-    const int variable = tableau.basicVariable[static_cast<size_t>(row)];
+    const int variable = tableau.basicVariable[row];
     if (variable >= n && variable < 2 * n) z(variable - n) = std::max(values(row), 0.0);
   }
   return z;
@@ -173,7 +204,7 @@ LcpSolution extractSolution(const LemkeTableau& tableau, const Eigen::MatrixXd& 
   if (solution.z.cwiseMin(solution.w).cwiseAbs().maxCoeff() <= exact) return solution;
   Eigen::MatrixXd basis(n, n);
   for (int row = 0; row < n; ++row) {
-    basis.col(row) = constraintColumn(m, covering, tableau.basicVariable[static_cast<size_t>(row)]);
+    basis.col(row) = constraintColumn(m, covering, tableau.basicVariable[row]);
   }
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(basis);
   Eigen::VectorXd values = lu.solve(q);
@@ -202,23 +233,15 @@ LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const
   if (!m.allFinite() || !q.allFinite()) {
     return failed(solution, "Lemke: the problem is not finite (a velocity or mass overflowed)");
   }
-  if (n == 0 || q.minCoeff() >= 0.0) {
-    solution.z = Eigen::VectorXd::Zero(n);
-    solution.w = q;
-    solution.solved = true;
-    return solution;
-  }
-  LemkeTableau tableau{Eigen::MatrixXd::Identity(n, n), q,
-                       std::vector<int>(static_cast<size_t>(n))};
-  for (int i = 0; i < n; ++i) tableau.basicVariable[static_cast<size_t>(i)] = i;
+  if (n == 0 || q.minCoeff() >= 0.0) return zeroSolution(q);
+  LemkeTableau tableau = startingTableau(q);
   const int artificial = 2 * n;
   int entering = artificial;
-  const int pivotLimit = static_cast<int>(
-      std::min<long>(options.maxPivots, static_cast<long>(options.maxPivotsPerVariable) * n));
+  const int pivotLimit = pivotLimitOf(options, n);
   Eigen::VectorXd direction = -path.covering;
   int row = firstLeavingRow(q, path.covering);
   for (solution.pivots = 1;; ++solution.pivots) {
-    const int leaving = tableau.basicVariable[static_cast<size_t>(row)];
+    const int leaving = tableau.basicVariable[row];
     pivot(tableau, direction, row, entering);
     if (path.ratioTest == RatioTest::Harris)
       tableau.basicValues = tableau.basicValues.cwiseMax(0.0);
@@ -233,9 +256,7 @@ LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const
       return failed(solution, "Lemke: the tableau overflowed after " +
                                   std::to_string(solution.pivots) + " pivots");
     }
-    row = path.ratioTest == RatioTest::Harris
-              ? harrisLeavingRow(tableau, direction, options, artificial)
-              : leavingRow(tableau, direction, options, artificial);
+    row = nextLeavingRow(tableau, direction, path, options, artificial);
     if (row < 0) {
       return failed(solution, "Lemke: secondary ray after " + std::to_string(solution.pivots) +
                                   " pivots (no solution found from this start)");

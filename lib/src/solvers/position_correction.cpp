@@ -35,7 +35,7 @@ struct CurrentPoint {
 };
 
 CurrentPoint currentPoint(const Body& a, const Body& b, const Manifold& manifold, int index) {
-  const ContactPoint& point = manifold.points[static_cast<size_t>(index)];
+  const ContactPoint& point = manifold.points[index];
   const Vec2 anchorA = a.toWorld(point.anchorA);
   const Vec2 anchorB = b.toWorld(point.anchorB);
   return {contactPointBetween(anchorA, anchorB), (anchorA - anchorB).dot(manifold.normal)};
@@ -57,9 +57,9 @@ void report(const StepContext& context, int sweep, int manifold, int point, doub
 /// moved the bodies.
 bool correctPoint(const StepContext& context, int manifoldIndex, int index,
                   const Correction& correction, int sweep) {
-  const Manifold& manifold = context.manifolds[static_cast<size_t>(manifoldIndex)];
-  Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
-  Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+  const Manifold& manifold = context.manifolds[manifoldIndex];
+  Body& a = context.bodies[manifold.bodyA];
+  Body& b = context.bodies[manifold.bodyB];
   const CurrentPoint point = currentPoint(a, b, manifold, index);
   const double removed = wantedRemoval(point.penetration, correction);
   if (removed <= 0.0) return false;
@@ -79,9 +79,9 @@ enum class BlockCorrection { Moved, NothingToRemove, IllConditioned };
 /// Does nothing when K is too ill-conditioned to solve as a block, and says so.
 BlockCorrection correctTogether(const StepContext& context, int manifoldIndex,
                                 const Correction& correction, int sweep) {
-  const Manifold& manifold = context.manifolds[static_cast<size_t>(manifoldIndex)];
-  Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
-  Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+  const Manifold& manifold = context.manifolds[manifoldIndex];
+  Body& a = context.bodies[manifold.bodyA];
+  Body& b = context.bodies[manifold.bodyB];
   const std::array<CurrentPoint, 2> points{currentPoint(a, b, manifold, 0),
                                            currentPoint(a, b, manifold, 1)};
   const Vec2 wanted(wantedRemoval(points[0].penetration, correction),
@@ -94,8 +94,8 @@ BlockCorrection correctTogether(const StepContext& context, int manifoldIndex,
   const Vec2 pushes = solveTwoPointLcp(k, -wanted);
   const Vec2 removed = k * pushes;
   for (int i = 0; i < 2; ++i) {
-    moveBody(a, -pushes(i) * manifold.normal, points[static_cast<size_t>(i)].where);
-    moveBody(b, pushes(i) * manifold.normal, points[static_cast<size_t>(i)].where);
+    moveBody(a, -pushes(i) * manifold.normal, points[i].where);
+    moveBody(b, pushes(i) * manifold.normal, points[i].where);
     report(context, sweep, manifoldIndex, i, removed(i));
   }
   return BlockCorrection::Moved;
@@ -106,7 +106,7 @@ BlockCorrection correctTogether(const StepContext& context, int manifoldIndex,
 bool correctionSweep(const StepContext& context, const Correction& correction, int sweep) {
   bool moved = false;
   for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
-    const int points = context.manifolds[static_cast<size_t>(m)].pointCount;
+    const int points = context.manifolds[m].pointCount;
     if (correction.block.enabled && points == 2) {
       const BlockCorrection block = correctTogether(context, m, correction, sweep);
       moved = moved || block == BlockCorrection::Moved;

@@ -28,7 +28,7 @@ enum LcpVariable {
 constexpr int kVariablesPerPoint = 4;
 
 const ContactPoint& pointOf(const StepContext& context, int manifold, int point) {
-  return context.manifolds[static_cast<size_t>(manifold)].points[static_cast<size_t>(point)];
+  return context.manifolds[manifold].points[point];
 }
 
 /// The worst violated condition of one point, in N s (velocities turned into impulses by the
@@ -143,6 +143,71 @@ Eigen::Vector3d velocityOf(const Body& body) {
   return {body.velocity.x(), body.velocity.y(), body.angularVelocity};
 }
 
+/// The island's bodies (the step's numbers, in the island's order) into its problem: 3 inverse
+/// masses and 3 velocities per body.
+void setIslandBodies(const StepContext& context, const std::vector<int>& bodies,
+                     IslandProblem& problem) {
+  problem.inverseMass.resize(3 * static_cast<int>(bodies.size()));
+  problem.velocity.resize(3 * static_cast<int>(bodies.size()));
+  for (int k = 0; k < static_cast<int>(bodies.size()); ++k) {
+    const Body& body = context.bodies[bodies[k]];
+    problem.inverseMass.segment<3>(3 * k) << body.inverseMass, body.inverseMass,
+        body.inverseInertia;
+    problem.velocity.segment<3>(3 * k) = velocityOf(body);
+  }
+}
+
+/// A point's Jacobian rows, jacobian[axis][side] (axis 0 normal, 1 tangent; side 0 A, 1 B).
+using PointJacobian = std::array<std::array<Eigen::Vector3d, 2>, 2>;
+
+/// Adds the term of a body b that points i and j share, J_ib M_b⁻¹ J_jbᵀ, to W's 2×2 block of
+/// point i's rows and point j's columns.
+void addSharedBody(const PointJacobian& row, int sideI, const PointJacobian& column, int sideJ,
+                   const Eigen::Vector3d& inverseMass, Eigen::Matrix2d& block) {
+  for (int a = 0; a < 2; ++a) {
+    for (int b = 0; b < 2; ++b) {
+      block(a, b) += row[a][sideI].cwiseProduct(column[b][sideJ]).dot(inverseMass);
+    }
+  }
+}
+
+/// W's 2×2 blocks in one column pair (point j's two columns) while they are summed body by body:
+/// the listed points coupled to j so far and their blocks. Its storage serves every column pair.
+class ColumnPairBlocks {
+ public:
+  /// Blocks for `count` listed points.
+  explicit ColumnPairBlocks(int count) : blocks_(count), lastColumn_(count, -1) {}
+
+  /// Point i's block in column pair j, zeroed (and i counted as coupled) when j first asks.
+  Eigen::Matrix2d& of(int i, int j) {
+    Eigen::Matrix2d& block = blocks_[i];
+    if (lastColumn_[i] != j) {
+      lastColumn_[i] = j;
+      block.setZero();
+      coupled_.push_back(i);
+    }
+    return block;
+  }
+
+  /// Writes the column pair's two columns, rows in increasing order, and starts the next pair.
+  void write(CompressedColumns& columns) {
+    std::sort(coupled_.begin(), coupled_.end());
+    for (int b = 0; b < 2; ++b) {
+      for (const int i : coupled_) {
+        columns.add(2 * i, blocks_[i](0, b));
+        columns.add(2 * i + 1, blocks_[i](1, b));
+      }
+      columns.close();
+    }
+    coupled_.clear();
+  }
+
+ private:
+  std::vector<int> coupled_;  ///< the points coupled to this column pair, in the order found
+  std::vector<Eigen::Matrix2d> blocks_;
+  std::vector<int> lastColumn_;  ///< the column pair each point's block was last zeroed for
+};
+
 }  // namespace
 
 void ReferenceSolver::solveVelocities(const StepContext& context) {
@@ -182,15 +247,15 @@ Eigen::VectorXd ReferenceSolver::exactImpulses(const StepContext& context) {
 void ReferenceSolver::collectPoints(const StepContext& context) {
   rows_.clear();
   lastStates_.recall(context.manifolds);
-  for (size_t m = 0; m < context.manifolds.size(); ++m) {
+  for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     const Manifold& manifold = context.manifolds[m];
-    const Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
-    const Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+    const Body& a = context.bodies[manifold.bodyA];
+    const Body& b = context.bodies[manifold.bodyB];
     for (int i = 0; i < manifold.pointCount; ++i) {
-      const ContactPoint& point = manifold.points[static_cast<size_t>(i)];
+      const ContactPoint& point = manifold.points[i];
       const double normalVelocity = relativeVelocity(a, b, point.point, manifold.normal);
       PointRow row{
-          static_cast<int>(m),
+          m,
           i,
           manifold.friction,
           targetSeparatingVelocity(normalVelocity, point.penetration, manifold.restitution,
@@ -201,13 +266,13 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
           std::max(momentumAt(a, point.point, context.dt), momentumAt(b, point.point, context.dt))};
       row.body = {a.isStatic() ? -1 : manifold.bodyA, b.isStatic() ? -1 : manifold.bodyB};
       const std::array<Vec2, 2> axes{{manifold.normal, manifold.tangent()}};
-      for (size_t axis = 0; axis < 2; ++axis) {
+      for (int axis = 0; axis < 2; ++axis) {
         row.jacobian[axis] = {jacobianRow(a, point.point, axes[axis], -1.0),
                               jacobianRow(b, point.point, axes[axis], 1.0)};
       }
       row.lastImpulse = {point.normalImpulse, point.tangentImpulse};
       row.carried = point.carried;
-      row.lastState = lastStates_.recalled(static_cast<int>(m), i);
+      row.lastState = lastStates_.recalled(m, i);
       rows_.push_back(row);
     }
   }
@@ -219,14 +284,13 @@ void ReferenceSolver::collectPoints(const StepContext& context) {
 // bodies (velocityChange).
 void ReferenceSolver::buildEffectiveMasses(const StepContext& context) {
   inverseMass_.resize(3 * static_cast<int>(context.bodies.size()));
-  for (size_t b = 0; b < context.bodies.size(); ++b) {
+  for (int b = 0; b < static_cast<int>(context.bodies.size()); ++b) {
     const Body& body = context.bodies[b];
-    inverseMass_.segment<3>(3 * static_cast<int>(b)) << body.inverseMass, body.inverseMass,
-        body.inverseInertia;
+    inverseMass_.segment<3>(3 * b) << body.inverseMass, body.inverseMass, body.inverseInertia;
   }
   diagonal_.resize(2 * static_cast<int>(rows_.size()));
   for (int k = 0; k < diagonal_.size(); ++k) {
-    diagonal_(k) = inverseEffectiveMass(rows_[static_cast<size_t>(k / 2)], k % 2, inverseMass_);
+    diagonal_(k) = inverseEffectiveMass(rows_[k / 2], k % 2, inverseMass_);
   }
 }
 
@@ -237,58 +301,47 @@ void ReferenceSolver::buildEffectiveMasses(const StepContext& context) {
 // symmetric. Only points that share a dynamic body couple.
 Eigen::SparseMatrix<double> ReferenceSolver::islandDelassus(const std::vector<int>& points) const {
   const int count = static_cast<int>(points.size());
-  std::vector<std::vector<std::pair<int, size_t>>> pointsOfBody(
-      static_cast<size_t>(inverseMass_.size() / 3));
-  for (int k = 0; k < count; ++k) {
-    for (size_t side = 0; side < 2; ++side) {
-      const int body = rows_[static_cast<size_t>(points[static_cast<size_t>(k)])].body[side];
-      if (body >= 0) pointsOfBody[static_cast<size_t>(body)].push_back({k, side});
-    }
+  const std::vector<std::vector<std::pair<int, int>>> pointsOfBody = pointsOfBodies(points);
+  Eigen::Index entries = 0;  // at most 4 per pair of points sharing a body
+  for (const auto& incident : pointsOfBody) {
+    const Eigen::Index shared = static_cast<int>(incident.size());
+    entries += 4 * shared * shared;
   }
-  size_t entries = 0;  // at most 4 per pair of points sharing a body
-  for (const auto& incident : pointsOfBody) entries += 4 * incident.size() * incident.size();
   CompressedColumns columns(2 * count, entries);
-  std::vector<int> coupled;
-  std::vector<Eigen::Matrix2d> blocks(static_cast<size_t>(count));
-  std::vector<int> lastColumn(static_cast<size_t>(count), -1);
+  ColumnPairBlocks blocks(count);
   for (int j = 0; j < count; ++j) {
-    const PointRow& column = rows_[static_cast<size_t>(points[static_cast<size_t>(j)])];
-    coupled.clear();
-    for (size_t sideJ = 0; sideJ < 2; ++sideJ) {
+    const PointRow& column = rows_[points[j]];
+    for (int sideJ = 0; sideJ < 2; ++sideJ) {
       const int body = column.body[sideJ];
       if (body < 0) continue;
       const Eigen::Vector3d inverseMass = inverseMass_.segment<3>(3 * body);
-      for (const auto& [i, sideI] : pointsOfBody[static_cast<size_t>(body)]) {
-        Eigen::Matrix2d& block = blocks[static_cast<size_t>(i)];
-        if (lastColumn[static_cast<size_t>(i)] != j) {
-          lastColumn[static_cast<size_t>(i)] = j;
-          block.setZero();
-          coupled.push_back(i);
-        }
-        const PointRow& row = rows_[static_cast<size_t>(points[static_cast<size_t>(i)])];
-        for (size_t a = 0; a < 2; ++a) {
-          for (size_t b = 0; b < 2; ++b) {
-            block(static_cast<int>(a), static_cast<int>(b)) +=
-                row.jacobian[a][sideI].cwiseProduct(column.jacobian[b][sideJ]).dot(inverseMass);
-          }
-        }
+      for (const auto& [i, sideI] : pointsOfBody[body]) {
+        addSharedBody(rows_[points[i]].jacobian, sideI, column.jacobian, sideJ, inverseMass,
+                      blocks.of(i, j));
       }
     }
-    std::sort(coupled.begin(), coupled.end());
-    for (int b = 0; b < 2; ++b) {
-      for (const int i : coupled) {
-        columns.add(2 * i, blocks[static_cast<size_t>(i)](0, b));
-        columns.add(2 * i + 1, blocks[static_cast<size_t>(i)](1, b));
-      }
-      columns.close();
-    }
+    blocks.write(columns);
   }
   return columns.take();
 }
 
+// Each body's points among the listed ones, as (local point, side of the contact: 0 A, 1 B), in
+// the order of the list.
+std::vector<std::vector<std::pair<int, int>>> ReferenceSolver::pointsOfBodies(
+    const std::vector<int>& points) const {
+  std::vector<std::vector<std::pair<int, int>>> pointsOfBody(inverseMass_.size() / 3);
+  for (int k = 0; k < static_cast<int>(points.size()); ++k) {
+    for (int side = 0; side < 2; ++side) {
+      const int body = rows_[points[k]].body[side];
+      if (body >= 0) pointsOfBody[body].push_back({k, side});
+    }
+  }
+  return pointsOfBody;
+}
+
 Eigen::SparseMatrix<double> ReferenceSolver::delassusMatrix() const {
   std::vector<int> all(rows_.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  for (int i = 0; i < static_cast<int>(all.size()); ++i) all[i] = i;
   return islandDelassus(all);
 }
 
@@ -300,14 +353,13 @@ Eigen::VectorXd ReferenceSolver::velocityChange(const std::vector<int>& points,
   Eigen::VectorXd bodies = Eigen::VectorXd::Zero(inverseMass_.size());
   for (const int i : points) {
     for (int axis = 0; axis < 2; ++axis) {
-      addBodyVelocityChange(rows_[static_cast<size_t>(i)], axis, impulses(2 * i + axis),
-                            inverseMass_, bodies);
+      addBodyVelocityChange(rows_[i], axis, impulses(2 * i + axis), inverseMass_, bodies);
     }
   }
   Eigen::VectorXd change = Eigen::VectorXd::Zero(impulses.size());
   for (const int i : points) {
     for (int axis = 0; axis < 2; ++axis) {
-      change(2 * i + axis) = jacobianTimes(rows_[static_cast<size_t>(i)], axis, bodies);
+      change(2 * i + axis) = jacobianTimes(rows_[i], axis, bodies);
     }
   }
   return change;
@@ -315,13 +367,13 @@ Eigen::VectorXd ReferenceSolver::velocityChange(const std::vector<int>& points,
 
 void ReferenceSolver::buildFreeVelocity(const StepContext& context) {
   freeVelocity_.resize(2 * static_cast<int>(rows_.size()));
-  for (size_t i = 0; i < rows_.size(); ++i) {
-    const Manifold& manifold = context.manifolds[static_cast<size_t>(rows_[i].manifold)];
-    const Body& a = context.bodies[static_cast<size_t>(manifold.bodyA)];
-    const Body& b = context.bodies[static_cast<size_t>(manifold.bodyB)];
+  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+    const Manifold& manifold = context.manifolds[rows_[i].manifold];
+    const Body& a = context.bodies[manifold.bodyA];
+    const Body& b = context.bodies[manifold.bodyB];
     const Vec2& point = pointOf(context, rows_[i].manifold, rows_[i].point).point;
-    freeVelocity_(2 * static_cast<int>(i)) = relativeVelocity(a, b, point, manifold.normal);
-    freeVelocity_(2 * static_cast<int>(i) + 1) = relativeVelocity(a, b, point, manifold.tangent());
+    freeVelocity_(2 * i) = relativeVelocity(a, b, point, manifold.normal);
+    freeVelocity_(2 * i + 1) = relativeVelocity(a, b, point, manifold.tangent());
   }
 }
 
@@ -330,30 +382,29 @@ void ReferenceSolver::buildFreeVelocity(const StepContext& context) {
 // points on it do not couple), which is what cuts a pile on the ground into islands.
 void ReferenceSolver::groupIslands(const StepContext& context) {
   std::vector<int> parent(context.bodies.size());
-  for (size_t b = 0; b < parent.size(); ++b) parent[b] = static_cast<int>(b);
+  for (int b = 0; b < static_cast<int>(parent.size()); ++b) parent[b] = b;
   const auto root = [&parent](int body) {
-    while (parent[static_cast<size_t>(body)] != body) {
-      body = parent[static_cast<size_t>(body)] =
-          parent[static_cast<size_t>(parent[static_cast<size_t>(body)])];
+    while (parent[body] != body) {
+      body = parent[body] = parent[parent[body]];
     }
     return body;
   };
   for (const PointRow& row : rows_) {
     if (row.body[0] >= 0 && row.body[1] >= 0) {
-      parent[static_cast<size_t>(root(row.body[0]))] = root(row.body[1]);
+      parent[root(row.body[0])] = root(row.body[1]);
     }
   }
   std::vector<int> islandOfRoot(parent.size(), -1);
   islands_.clear();
   for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
-    const PointRow& row = rows_[static_cast<size_t>(i)];
+    const PointRow& row = rows_[i];
     const int body = root(row.body[0] >= 0 ? row.body[0] : row.body[1]);
-    int& island = islandOfRoot[static_cast<size_t>(body)];
+    int& island = islandOfRoot[body];
     if (island < 0) {
       island = static_cast<int>(islands_.size());
       islands_.emplace_back();
     }
-    islands_[static_cast<size_t>(island)].push_back(i);
+    islands_[island].push_back(i);
   }
 }
 
@@ -364,14 +415,12 @@ void ReferenceSolver::groupIslands(const StepContext& context) {
 std::vector<int> ReferenceSolver::inFeatureIdOrder(const StepContext& context,
                                                    const std::vector<int>& island) const {
   std::vector<int> ordered = island;
-  for (size_t k = 0; k + 1 < ordered.size(); ++k) {
-    const PointRow& first = rows_[static_cast<size_t>(ordered[k])];
-    const PointRow& second = rows_[static_cast<size_t>(ordered[k + 1])];
+  for (int k = 0; k + 1 < static_cast<int>(ordered.size()); ++k) {
+    const PointRow& first = rows_[ordered[k]];
+    const PointRow& second = rows_[ordered[k + 1]];
     if (first.manifold != second.manifold) continue;
-    const Manifold& manifold = context.manifolds[static_cast<size_t>(first.manifold)];
-    const auto id = [&](const PointRow& row) {
-      return manifold.points[static_cast<size_t>(row.point)].id;
-    };
+    const Manifold& manifold = context.manifolds[first.manifold];
+    const auto id = [&](const PointRow& row) { return manifold.points[row.point].id; };
     if (id(second) < id(first)) std::swap(ordered[k], ordered[k + 1]);
     ++k;
   }
@@ -386,9 +435,8 @@ void ReferenceSolver::solveIsland(const StepContext& context, const std::vector<
                                   int& largeIslands, Eigen::VectorXd& impulses) {
   std::string failure;
   if (solveIslandOnce(context, island, largeIslands, impulses, failure)) return;
-  const bool bounces = std::any_of(island.begin(), island.end(), [this](int i) {
-    return rows_[static_cast<size_t>(i)].bounces();
-  });
+  const bool bounces =
+      std::any_of(island.begin(), island.end(), [this](int i) { return rows_[i].bounces(); });
   if (!settings_.restitutionInTwoSolves || !bounces) fail(failure);
   bounceInTwoSolves(context, island, largeIslands, impulses, failure);
 }
@@ -413,7 +461,7 @@ bool ReferenceSolver::solveIslandOnce(const StepContext& context, const std::vec
     const Eigen::VectorXd answer = islandImpulses(island, solution.z);
     for (const int point : island) {
       impulses.segment<2>(2 * point) = answer.segment<2>(2 * point);
-      PointRow& row = rows_[static_cast<size_t>(point)];
+      PointRow& row = rows_[point];
       row.state = stateOfImpulses(answer(2 * point), answer(2 * point + 1), row.friction);
     }
     return true;
@@ -439,10 +487,10 @@ bool ReferenceSolver::solveIslandByActiveSet(const StepContext& context,
     failure += answer.failure;
     return false;
   }
-  for (size_t k = 0; k < ordered.size(); ++k) {
+  for (int k = 0; k < static_cast<int>(ordered.size()); ++k) {
     const int i = ordered[k];
-    impulses.segment<2>(2 * i) = answer.impulses.segment<2>(2 * static_cast<int>(k));
-    rows_[static_cast<size_t>(i)].state = answer.states[k];
+    impulses.segment<2>(2 * i) = answer.impulses.segment<2>(2 * k);
+    rows_[i].state = answer.states[k];
   }
   const double violation = residualOver(island, impulses);
   if (violation <= settings_.residualTolerance) return true;
@@ -464,8 +512,8 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
                                         int& largeIslands, Eigen::VectorXd& impulses,
                                         const std::string& newtonFailure) {
   std::vector<double> restitution(island.size(), 0.0);  // of the points that were to bounce
-  for (size_t k = 0; k < island.size(); ++k) {
-    PointRow& row = rows_[static_cast<size_t>(island[k])];
+  for (int k = 0; k < static_cast<int>(island.size()); ++k) {
+    PointRow& row = rows_[island[k]];
     if (row.bounces()) restitution[k] = row.restitution;
     row.targetNormalVelocity = row.inelasticTarget;
   }
@@ -474,7 +522,7 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
     fail(newtonFailure + "; in two solves, compression: " + failure);
   }
   Eigen::VectorXd push = Eigen::VectorXd::Zero(impulses.size());
-  for (size_t k = 0; k < island.size(); ++k) {
+  for (int k = 0; k < static_cast<int>(island.size()); ++k) {
     const int i = island[k];
     push.segment<2>(2 * i) = impulses.segment<2>(2 * i);
     push(2 * i) *= 1.0 + restitution[k];
@@ -486,19 +534,26 @@ void ReferenceSolver::bounceInTwoSolves(const StepContext& context, const std::v
   }
 }
 
-LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const {
+// The island's dense LCP (formulateLcp) from its block of W, its friction coefficients and its
+// free velocities, the normal ones less their targets.
+void ReferenceSolver::islandLcp(const std::vector<int>& island, Eigen::MatrixXd& matrix,
+                                Eigen::VectorXd& vector) const {
   const int count = static_cast<int>(island.size());
   Eigen::VectorXd friction(count);
   Eigen::VectorXd free(2 * count);
   for (int k = 0; k < count; ++k) {
-    const int i = island[static_cast<size_t>(k)];
-    friction(k) = rows_[static_cast<size_t>(i)].friction;
-    free(2 * k) = freeVelocity_(2 * i) - rows_[static_cast<size_t>(i)].targetNormalVelocity;
+    const int i = island[k];
+    friction(k) = rows_[i].friction;
+    free(2 * k) = freeVelocity_(2 * i) - rows_[i].targetNormalVelocity;
     free(2 * k + 1) = freeVelocity_(2 * i + 1);
   }
+  formulateLcp(Eigen::MatrixXd(islandDelassus(island)), friction, free, matrix, vector);
+}
+
+LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const {
   Eigen::MatrixXd matrix;
   Eigen::VectorXd vector;
-  formulateLcp(Eigen::MatrixXd(islandDelassus(island)), friction, free, matrix, vector);
+  islandLcp(island, matrix, vector);
   const int size = static_cast<int>(vector.size());
   const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
   const double perturbation =
@@ -535,8 +590,8 @@ LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const 
 Eigen::VectorXd ReferenceSolver::islandImpulses(const std::vector<int>& island,
                                                 const Eigen::VectorXd& z) const {
   Eigen::VectorXd impulses = Eigen::VectorXd::Zero(2 * static_cast<int>(rows_.size()));
-  for (size_t k = 0; k < island.size(); ++k) {
-    const int ri = kVariablesPerPoint * static_cast<int>(k);
+  for (int k = 0; k < static_cast<int>(island.size()); ++k) {
+    const int ri = kVariablesPerPoint * k;
     impulses.segment<2>(2 * island[k]) << z(ri + NormalImpulse),
         z(ri + PositiveFriction) - z(ri + NegativeFriction);
   }
@@ -547,7 +602,7 @@ KeptFactorization& ReferenceSolver::keptFactorization(int ordinal) {
   while (static_cast<int>(keptFactors_.size()) <= ordinal) {
     keptFactors_.push_back(std::make_unique<KeptFactorization>());
   }
-  return *keptFactors_[static_cast<size_t>(ordinal)];
+  return *keptFactors_[ordinal];
 }
 
 ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
@@ -557,44 +612,45 @@ ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
   std::vector<int> localBody(context.bodies.size(), -1);
   std::vector<int> bodies;
   problem.guess.resize(2 * static_cast<int>(island.size()));
-  for (size_t k = 0; k < island.size(); ++k) {
-    const PointRow& row = rows_[static_cast<size_t>(island[k])];
-    IslandPoint point;
-    point.carried = row.carried;
-    point.lastState = row.lastState;
-    point.targetNormalVelocity = row.targetNormalVelocity;
-    point.friction = row.friction;
-    point.jacobian = row.jacobian;
-    const Manifold& manifold = context.manifolds[static_cast<size_t>(row.manifold)];
-    const std::array<int, 2> pair{{manifold.bodyA, manifold.bodyB}};
-    for (size_t side = 0; side < 2; ++side) {
-      const Body& body = context.bodies[static_cast<size_t>(pair[side])];
-      if (row.body[side] < 0) {
-        for (size_t axis = 0; axis < 2; ++axis) {
-          point.staticVelocity[axis] += row.jacobian[axis][side].dot(velocityOf(body));
-        }
-        continue;
-      }
-      int& local = localBody[static_cast<size_t>(pair[side])];
-      if (local < 0) {
-        local = static_cast<int>(bodies.size());
-        bodies.push_back(pair[side]);
-      }
-      point.body[side] = local;
-    }
-    problem.points.push_back(point);
-    problem.guess.segment<2>(2 * static_cast<int>(k)) = row.lastImpulse;
+  for (int k = 0; k < static_cast<int>(island.size()); ++k) {
+    const PointRow& row = rows_[island[k]];
+    problem.points.push_back(islandPoint(context, row, localBody, bodies));
+    problem.guess.segment<2>(2 * k) = row.lastImpulse;
   }
-  problem.inverseMass.resize(3 * static_cast<int>(bodies.size()));
-  problem.velocity.resize(3 * static_cast<int>(bodies.size()));
-  for (size_t k = 0; k < bodies.size(); ++k) {
-    const Body& body = context.bodies[static_cast<size_t>(bodies[k])];
-    problem.inverseMass.segment<3>(3 * static_cast<int>(k)) << body.inverseMass, body.inverseMass,
-        body.inverseInertia;
-    problem.velocity.segment<3>(3 * static_cast<int>(k)) = velocityOf(body);
-  }
+  setIslandBodies(context, bodies, problem);
   if (needsGuessSweeps(problem, settings_.activeSet)) problem.delassus = islandDelassus(island);
   return solveActiveSet(problem, settings_.activeSet, kept);
+}
+
+// A point as the active set sees it: a static body's part of its velocities folded into
+// staticVelocity, its dynamic bodies numbered in the island as they are first met (localBody:
+// each body's number in the island, −1 before; bodies: the step's number of each).
+IslandPoint ReferenceSolver::islandPoint(const StepContext& context, const PointRow& row,
+                                         std::vector<int>& localBody, std::vector<int>& bodies) {
+  IslandPoint point;
+  point.carried = row.carried;
+  point.lastState = row.lastState;
+  point.targetNormalVelocity = row.targetNormalVelocity;
+  point.friction = row.friction;
+  point.jacobian = row.jacobian;
+  const Manifold& manifold = context.manifolds[row.manifold];
+  const std::array<int, 2> pair{{manifold.bodyA, manifold.bodyB}};
+  for (int side = 0; side < 2; ++side) {
+    const Body& body = context.bodies[pair[side]];
+    if (row.body[side] < 0) {
+      for (int axis = 0; axis < 2; ++axis) {
+        point.staticVelocity[axis] += row.jacobian[axis][side].dot(velocityOf(body));
+      }
+      continue;
+    }
+    int& local = localBody[pair[side]];
+    if (local < 0) {
+      local = static_cast<int>(bodies.size());
+      bodies.push_back(pair[side]);
+    }
+    point.body[side] = local;
+  }
+  return point;
 }
 
 // The answer is checked against the physical conditions themselves, not the LCP's bookkeeping,
@@ -602,7 +658,7 @@ ActiveSetAnswer ReferenceSolver::solveByActiveSet(const StepContext& context,
 double ReferenceSolver::residual(const Eigen::VectorXd& impulses) const {
   if (impulses.size() == 0) return 0.0;
   std::vector<int> all(rows_.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  for (int i = 0; i < static_cast<int>(all.size()); ++i) all[i] = i;
   return residualOver(all, impulses);
 }
 
@@ -613,7 +669,7 @@ double ReferenceSolver::residualOver(const std::vector<int>& points,
   const Eigen::VectorXd velocity = freeVelocity_ + velocityChange(points, impulses);
   double worst = 0.0;
   for (const int i : points) {
-    const PointRow& row = rows_[static_cast<size_t>(i)];
+    const PointRow& row = rows_[i];
     worst = std::max(
         worst, pointViolation(impulses(2 * i), impulses(2 * i + 1),
                               velocity(2 * i) - row.targetNormalVelocity, velocity(2 * i + 1),
@@ -633,7 +689,7 @@ double ReferenceSolver::impulseScale(const std::vector<int>& points,
                                      const Eigen::VectorXd& impulses) const {
   double scale = 0.0;
   for (const int i : points) {
-    const PointRow& row = rows_[static_cast<size_t>(i)];
+    const PointRow& row = rows_[i];
     scale = std::max({scale, std::abs(impulses(2 * i)), std::abs(impulses(2 * i + 1)),
                       std::abs(freeVelocity_(2 * i) - row.targetNormalVelocity) / diagonal_(2 * i),
                       std::abs(freeVelocity_(2 * i + 1)) / diagonal_(2 * i + 1), row.momentum});
@@ -644,9 +700,9 @@ double ReferenceSolver::impulseScale(const std::vector<int>& points,
 void ReferenceSolver::applyImpulses(const StepContext& context, const Eigen::VectorXd& impulses) {
   const double onLimit = settings_.residualTolerance * impulses.cwiseAbs().maxCoeff();
   for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
-    const PointRow& row = rows_[static_cast<size_t>(i)];
-    Manifold& manifold = context.manifolds[static_cast<size_t>(row.manifold)];
-    ContactPoint& point = manifold.points[static_cast<size_t>(row.point)];
+    const PointRow& row = rows_[i];
+    Manifold& manifold = context.manifolds[row.manifold];
+    ContactPoint& point = manifold.points[row.point];
     point.normalImpulse = impulses(2 * i);
     point.tangentImpulse = impulses(2 * i + 1);
     point.friction =

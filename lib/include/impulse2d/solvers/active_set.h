@@ -66,9 +66,9 @@ struct IslandPoint {
 template <typename Point>
 double jacobianTimes(const Point& point, int axis, const Eigen::VectorXd& u) {
   double v = 0.0;
-  for (size_t side = 0; side < 2; ++side) {
+  for (int side = 0; side < 2; ++side) {
     const int body = point.body[side];
-    if (body >= 0) v += point.jacobian[static_cast<size_t>(axis)][side].dot(u.segment<3>(3 * body));
+    if (body >= 0) v += point.jacobian[axis][side].dot(u.segment<3>(3 * body));
   }
   return v;
 }
@@ -77,11 +77,11 @@ double jacobianTimes(const Point& point, int axis, const Eigen::VectorXd& u) {
 template <typename Point>
 void addBodyVelocityChange(const Point& point, int axis, double impulse,
                            const Eigen::VectorXd& inverseMass, Eigen::VectorXd& change) {
-  for (size_t side = 0; side < 2; ++side) {
+  for (int side = 0; side < 2; ++side) {
     const int body = point.body[side];
     if (body < 0) continue;
-    change.segment<3>(3 * body) += impulse * inverseMass.segment<3>(3 * body).cwiseProduct(
-                                                 point.jacobian[static_cast<size_t>(axis)][side]);
+    change.segment<3>(3 * body) +=
+        impulse * inverseMass.segment<3>(3 * body).cwiseProduct(point.jacobian[axis][side]);
   }
 }
 
@@ -89,10 +89,10 @@ void addBodyVelocityChange(const Point& point, int axis, double impulse,
 template <typename Point>
 double inverseEffectiveMass(const Point& point, int axis, const Eigen::VectorXd& inverseMass) {
   double w = 0.0;
-  for (size_t side = 0; side < 2; ++side) {
+  for (int side = 0; side < 2; ++side) {
     const int body = point.body[side];
     if (body < 0) continue;
-    const Eigen::Vector3d& row = point.jacobian[static_cast<size_t>(axis)][side];
+    const Eigen::Vector3d& row = point.jacobian[axis][side];
     w += row.cwiseProduct(row).dot(inverseMass.segment<3>(3 * body));
   }
   return w;

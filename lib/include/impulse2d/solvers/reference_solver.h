@@ -25,6 +25,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -119,6 +120,8 @@ class ReferenceSolver : public ContactSolver {
                          const std::string& newtonFailure);
   std::vector<int> inFeatureIdOrder(const StepContext& context,
                                     const std::vector<int>& island) const;
+  void islandLcp(const std::vector<int>& island, Eigen::MatrixXd& matrix,
+                 Eigen::VectorXd& vector) const;
   LcpSolution solveByLemke(const std::vector<int>& island) const;
   /// The island by the active set; false, with its reason added to `failure`, if it fails.
   bool solveIslandByActiveSet(const StepContext& context, const std::vector<int>& island,
@@ -126,10 +129,14 @@ class ReferenceSolver : public ContactSolver {
                               std::string& failure);
   ActiveSetAnswer solveByActiveSet(const StepContext& context, const std::vector<int>& island,
                                    KeptFactorization& kept);
+  static IslandPoint islandPoint(const StepContext& context, const PointRow& row,
+                                 std::vector<int>& localBody, std::vector<int>& bodies);
   /// The factorization kept from step to step for the island given to the active set as the
   /// `ordinal`-th large one of the step.
   KeptFactorization& keptFactorization(int ordinal);
   Eigen::SparseMatrix<double> islandDelassus(const std::vector<int>& points) const;
+  std::vector<std::vector<std::pair<int, int>>> pointsOfBodies(
+      const std::vector<int>& points) const;
   Eigen::VectorXd velocityChange(const std::vector<int>& points,
                                  const Eigen::VectorXd& impulses) const;
   Eigen::VectorXd islandImpulses(const std::vector<int>& island, const Eigen::VectorXd& z) const;
