@@ -134,3 +134,90 @@ TEST_CASE("neither the world nor the solver interface names a method", "[layout]
   const std::string interface = lowered(readText(kLib / "include" / "impulse2d" / "solver.h"));
   CHECK(interface.find("speculative") == std::string::npos);
 }
+
+TEST_CASE("a contact point holds no one method's state", "[layout]") {
+  // What one method keeps per point lives in its own PointMemory (solvers/point_memory.h);
+  // ContactPoint keeps the geometry and the impulses every method reports.
+  const std::string contact = lowered(readText(kLib / "include" / "impulse2d" / "contact.h"));
+  REQUIRE(contact.find("struct contactpoint") != std::string::npos);
+  for (const char* word : {"micro", "soft step", "soft_step", "sequential", "reference's",
+                           "substep", "bounce", "exact"}) {
+    INFO("contact.h mentions " << word);
+    CHECK(contact.find(word) == std::string::npos);
+  }
+}
+
+namespace {
+
+/// A function definition in a source file: its first line and its length in lines, from the first
+/// line of its signature to its closing brace. Definitions start at column 0 and end at the next
+/// "}" in column 0, as .clang-format writes them.
+struct Definition {
+  int line = 0;
+  int length = 0;
+};
+
+/// Whether a statement starting in column 0 (its lines joined up to its first "{" or ";") opens a
+/// function: it has a parameter list before any "=", and is not a type or namespace.
+bool opensFunction(const std::string& statement) {
+  static const std::regex notFunction(R"(^(namespace|struct|class|enum|union|extern|template)\b)");
+  const size_t parameters = statement.find('(');
+  return statement.back() == '{' && parameters != std::string::npos &&
+         statement.find('=') > parameters && !std::regex_search(statement, notFunction);
+}
+
+std::vector<Definition> definitionsIn(const fs::path& file) {
+  std::istringstream text(readText(file));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(text, line);) lines.push_back(line);
+  std::vector<Definition> found;
+  for (int first = 0; first < int(lines.size()); ++first) {
+    if (lines[first].empty() || !(std::isalpha(lines[first][0]) || lines[first][0] == '_')) {
+      continue;
+    }
+    std::string statement;
+    int last = first;
+    for (; last < int(lines.size()); ++last) {
+      statement += lines[last];
+      if (statement.back() == '{' || statement.back() == ';') break;
+    }
+    if (last == int(lines.size()) || !opensFunction(statement)) continue;
+    int end = last;
+    while (end < int(lines.size()) && !startsWith(lines[end], "}")) ++end;
+    found.push_back({first + 1, end - first + 1});
+    first = end;
+  }
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("no function in the solvers is longer than 40 lines", "[layout]") {
+  constexpr int kLongest = 40;
+  int definitions = 0;
+  for (const auto& entry : fs::directory_iterator(kLib / "src" / "solvers")) {
+    for (const Definition& definition : definitionsIn(entry.path())) {
+      ++definitions;
+      INFO(entry.path().filename().string()
+           << ":" << definition.line << " is " << definition.length << " lines long");
+      CHECK(definition.length <= kLongest);
+    }
+  }
+  CHECK(definitions > 150);  // the scan does find the solvers' functions
+}
+
+TEST_CASE("the solvers index with int, one style throughout", "[layout]") {
+  // Indices are int and subscript containers directly; a size is read as static_cast<int>.
+  const std::regex sizeCast(R"(static_cast<size_t>|static_cast<std::size_t>|[^\w:]size_t\()");
+  int files = 0;
+  for (const fs::path& folder :
+       {kLib / "src" / "solvers", kLib / "include" / "impulse2d" / "solvers"}) {
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      ++files;
+      INFO(entry.path().filename().string() << " casts an index to size_t");
+      const std::string text = readText(entry.path());
+      CHECK_FALSE(std::regex_search(text, sizeCast));
+    }
+  }
+  CHECK(files > 20);
+}
