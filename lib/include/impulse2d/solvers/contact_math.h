@@ -30,13 +30,13 @@ struct SolverBody {
 /// A manifold as an iterative solve holds it: which of the step's manifolds, its two bodies, its
 /// normal, its mixed coefficients and how many points it has.
 struct SolverManifold {
-  int manifold = 0;  ///< index into the step's manifolds
-  int bodyA = 0;
-  int bodyB = 0;
-  Vec2 normal = Vec2::Zero();  ///< from A to B
-  double friction = 0.0;
-  double restitution = 0.0;
-  int pointCount = 0;
+  int manifold = 0;            ///< index into the step's manifolds
+  int bodyA = 0;               ///< index into the world's bodies
+  int bodyB = 0;               ///< index into the world's bodies
+  Vec2 normal = Vec2::Zero();  ///< unit, from A to B
+  double friction = 0.0;       ///< mixed coefficient of friction
+  double restitution = 0.0;    ///< mixed coefficient of restitution
+  int pointCount = 0;          ///< 1 or 2
 
   /// Takes manifold number `index` of the step.
   void load(const Manifold& contact, int index) {
