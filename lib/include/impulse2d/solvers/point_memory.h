@@ -23,13 +23,18 @@ namespace impulse2d {
 template <class State>
 class PointMemory {
  public:
-  /// Looks up the state each point of `manifolds` ended its last solve with.
+  /// Looks up the state each point of `manifolds` ended its last solve with. One walk when the
+  /// manifolds come sorted by their bodies, as the world gives them; a search for any that do not.
   void recall(const std::vector<Manifold>& manifolds) {
     current_.assign(manifolds.size(), {State{}, State{}});
+    auto entry = entries_.cbegin();
     for (int m = 0; m < static_cast<int>(manifolds.size()); ++m) {
       const Manifold& manifold = manifolds[m];
-      auto entry = std::lower_bound(entries_.begin(), entries_.end(), manifold, pairBefore);
-      for (; entry != entries_.end() && samePair(*entry, manifold); ++entry) {
+      if (entry != entries_.cbegin() && pairBefore(manifold, *(entry - 1))) {
+        entry = std::lower_bound(entries_.cbegin(), entries_.cend(), manifold, entryBefore);
+      }
+      while (entry != entries_.cend() && entryBefore(*entry, manifold)) ++entry;
+      for (; entry != entries_.cend() && samePair(*entry, manifold); ++entry) {
         for (int i = 0; i < manifold.pointCount; ++i) {
           if (manifold.points[i].id == entry->id) current_[m][i] = entry->state;
         }
@@ -45,24 +50,23 @@ class PointMemory {
   void store(int manifold, int point, const State& state) { current_[manifold][point] = state; }
 
   /// Keeps what was stored for the next solve, with the states of the pairs whose bodies all
-  /// sleep (or are static); `manifolds` are recall's.
+  /// sleep (or are static); `manifolds` are recall's. One merge walk of the stored and the kept
+  /// states when the manifolds come sorted; a sort when they do not.
   void remember(const std::vector<Manifold>& manifolds, const std::vector<Body>& bodies) {
     next_.clear();
+    bool sorted = true;
+    auto old = entries_.cbegin();
     for (int m = 0; m < static_cast<int>(manifolds.size()); ++m) {
       const Manifold& manifold = manifolds[m];
+      if (m > 0 && pairBefore(manifold, manifolds[m - 1])) sorted = false;
+      for (; old != entries_.cend() && entryBefore(*old, manifold); ++old) keepAsleep(*old, bodies);
+      while (old != entries_.cend() && samePair(*old, manifold)) ++old;  // solved again
       for (int i = 0; i < manifold.pointCount; ++i) {
         next_.push_back({manifold.bodyA, manifold.bodyB, manifold.points[i].id, current_[m][i]});
       }
     }
-    const auto solved = static_cast<std::ptrdiff_t>(next_.size());
-    for (const Entry& entry : entries_) {
-      if (!bodies[entry.bodyA].isAwake() && !bodies[entry.bodyB].isAwake()) next_.push_back(entry);
-    }
-    if (std::is_sorted(next_.begin(), next_.begin() + solved, entryBefore)) {
-      std::inplace_merge(next_.begin(), next_.begin() + solved, next_.end(), entryBefore);
-    } else {
-      std::stable_sort(next_.begin(), next_.end(), entryBefore);
-    }
+    for (; old != entries_.cend(); ++old) keepAsleep(*old, bodies);
+    if (!sorted) std::stable_sort(next_.begin(), next_.end(), entryOrder);
     entries_.swap(next_);
   }
 
@@ -74,11 +78,22 @@ class PointMemory {
     State state;
   };
 
-  static bool entryBefore(const Entry& a, const Entry& b) {
+  /// An old state whose pair was not solved: kept while no body of the pair is awake.
+  void keepAsleep(const Entry& entry, const std::vector<Body>& bodies) {
+    if (!bodies[entry.bodyA].isAwake() && !bodies[entry.bodyB].isAwake()) next_.push_back(entry);
+  }
+
+  static bool entryOrder(const Entry& a, const Entry& b) {
     return std::tie(a.bodyA, a.bodyB) < std::tie(b.bodyA, b.bodyB);
   }
-  static bool pairBefore(const Entry& entry, const Manifold& manifold) {
+  static bool entryBefore(const Entry& entry, const Manifold& manifold) {
     return std::tie(entry.bodyA, entry.bodyB) < std::tie(manifold.bodyA, manifold.bodyB);
+  }
+  static bool pairBefore(const Manifold& manifold, const Entry& entry) {
+    return std::tie(manifold.bodyA, manifold.bodyB) < std::tie(entry.bodyA, entry.bodyB);
+  }
+  static bool pairBefore(const Manifold& a, const Manifold& b) {
+    return std::tie(a.bodyA, a.bodyB) < std::tie(b.bodyA, b.bodyB);
   }
   static bool samePair(const Entry& entry, const Manifold& manifold) {
     return entry.bodyA == manifold.bodyA && entry.bodyB == manifold.bodyB;
