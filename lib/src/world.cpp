@@ -51,7 +51,10 @@ void fallAsleep(Body& body) {
 class World::WorldStages : public StepStages {
  public:
   WorldStages(World& world, double h) : world_(world), h_(h) {}
-  void integrateVelocities() override { world_.integrateVelocities(h_); }
+  void integrateVelocities() override {
+    world_.integrateVelocities(h_);
+    if (world_.observer_) world_.observer_->onVelocitiesIntegrated(world_.bodies_);
+  }
   void integratePositions() override { world_.integratePositions(h_); }
   void clearForces() override { world_.clearForces(); }
   void refreshCaches() override { world_.refreshCaches(); }

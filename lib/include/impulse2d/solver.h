@@ -39,6 +39,9 @@ class SolverObserver {
   /// Called after the event's impulse or move has been applied to the bodies.
   virtual void onSolverEvent(const SolverEvent& event, const std::vector<Body>& bodies,
                              const std::vector<Manifold>& manifolds) = 0;
+  /// Called when the world has integrated the step's forces into the velocities, before the
+  /// method's first impulse: the velocities its contacts close with.
+  virtual void onVelocitiesIntegrated(const std::vector<Body>&) {}
 };
 
 /// What a solver works on in one step.

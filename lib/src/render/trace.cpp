@@ -111,6 +111,10 @@ void TraceRecorder::onSolverEvent(const SolverEvent& event, const std::vector<Bo
   before_ = bodies;
 }
 
+void TraceRecorder::onVelocitiesIntegrated(const std::vector<Body>& bodies) {
+  before_ = bodies;
+}
+
 void TraceRecorder::drawHighlight(Drawing& drawing, DrawnKinds& drawn, const SolverEvent& event,
                                   const std::vector<Body>& bodies,
                                   const std::vector<Manifold>& manifolds) const {
