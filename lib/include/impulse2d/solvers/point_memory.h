@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <array>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "impulse2d/body.h"
@@ -30,11 +30,12 @@ class PointMemory {
     auto entry = entries_.cbegin();
     for (int m = 0; m < static_cast<int>(manifolds.size()); ++m) {
       const Manifold& manifold = manifolds[m];
-      if (entry != entries_.cbegin() && pairBefore(manifold, *(entry - 1))) {
-        entry = std::lower_bound(entries_.cbegin(), entries_.cend(), manifold, entryBefore);
+      if (entry != entries_.cbegin() && pairOf(manifold) < pairOf(*(entry - 1))) {
+        entry = std::lower_bound(entries_.cbegin(), entries_.cend(), pairOf(manifold),
+                                 [](const Entry& e, const Pair& pair) { return pairOf(e) < pair; });
       }
-      while (entry != entries_.cend() && entryBefore(*entry, manifold)) ++entry;
-      for (; entry != entries_.cend() && samePair(*entry, manifold); ++entry) {
+      while (entry != entries_.cend() && pairOf(*entry) < pairOf(manifold)) ++entry;
+      for (; entry != entries_.cend() && pairOf(*entry) == pairOf(manifold); ++entry) {
         for (int i = 0; i < manifold.pointCount; ++i) {
           if (manifold.points[i].id == entry->id) current_[m][i] = entry->state;
         }
@@ -58,15 +59,20 @@ class PointMemory {
     auto old = entries_.cbegin();
     for (int m = 0; m < static_cast<int>(manifolds.size()); ++m) {
       const Manifold& manifold = manifolds[m];
-      if (m > 0 && pairBefore(manifold, manifolds[m - 1])) sorted = false;
-      for (; old != entries_.cend() && entryBefore(*old, manifold); ++old) keepAsleep(*old, bodies);
-      while (old != entries_.cend() && samePair(*old, manifold)) ++old;  // solved again
+      if (m > 0 && pairOf(manifold) < pairOf(manifolds[m - 1])) sorted = false;
+      for (; old != entries_.cend() && pairOf(*old) < pairOf(manifold); ++old) {
+        keepAsleep(*old, bodies);
+      }
+      while (old != entries_.cend() && pairOf(*old) == pairOf(manifold)) ++old;  // solved again
       for (int i = 0; i < manifold.pointCount; ++i) {
         next_.push_back({manifold.bodyA, manifold.bodyB, manifold.points[i].id, current_[m][i]});
       }
     }
     for (; old != entries_.cend(); ++old) keepAsleep(*old, bodies);
-    if (!sorted) std::stable_sort(next_.begin(), next_.end(), entryOrder);
+    if (!sorted) {
+      std::stable_sort(next_.begin(), next_.end(),
+                       [](const Entry& a, const Entry& b) { return pairOf(a) < pairOf(b); });
+    }
     entries_.swap(next_);
   }
 
@@ -83,20 +89,11 @@ class PointMemory {
     if (!bodies[entry.bodyA].isAwake() && !bodies[entry.bodyB].isAwake()) next_.push_back(entry);
   }
 
-  static bool entryOrder(const Entry& a, const Entry& b) {
-    return std::tie(a.bodyA, a.bodyB) < std::tie(b.bodyA, b.bodyB);
-  }
-  static bool entryBefore(const Entry& entry, const Manifold& manifold) {
-    return std::tie(entry.bodyA, entry.bodyB) < std::tie(manifold.bodyA, manifold.bodyB);
-  }
-  static bool pairBefore(const Manifold& manifold, const Entry& entry) {
-    return std::tie(manifold.bodyA, manifold.bodyB) < std::tie(entry.bodyA, entry.bodyB);
-  }
-  static bool pairBefore(const Manifold& a, const Manifold& b) {
-    return std::tie(a.bodyA, a.bodyB) < std::tie(b.bodyA, b.bodyB);
-  }
-  static bool samePair(const Entry& entry, const Manifold& manifold) {
-    return entry.bodyA == manifold.bodyA && entry.bodyB == manifold.bodyB;
+  /// The two bodies of an entry or a manifold: states and manifolds are ordered by them.
+  using Pair = std::pair<int, int>;
+  template <class T>
+  static Pair pairOf(const T& entryOrManifold) {
+    return {entryOrManifold.bodyA, entryOrManifold.bodyB};
   }
 
   std::vector<Entry> entries_;  ///< sorted by (bodyA, bodyB)
