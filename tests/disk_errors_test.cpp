@@ -1,16 +1,23 @@
 // A full disk: CSV rows, frames and contact sheets whose writing fails give one clear error (exit
 // 1 from i2d) and never leave a half-written file under the final name. Linux's /dev/full fails
 // every write with ENOSPC; a symbolic link from the temporary file's name to it makes any file
-// "on a full disk". (A missing directory is tested in i2d_test.cpp and frame_writer_test.cpp.)
+// "on a full disk". A CSV named by a link, a device or a pipe is written where the name leads,
+// never renamed over it. (A missing directory is tested in i2d_test.cpp and
+// frame_writer_test.cpp.)
 #include <catch2/catch.hpp>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "impulse2d/render/frame_writer.h"
 #include "impulse2d/render/png.h"
@@ -126,4 +133,94 @@ TEST_CASE("i2d run --frames on a full disk is one error line, exit code 1, and n
                            "\n");
   CHECK_FALSE(fs::exists(scene / "bouncing_ball_sheet.png"));
   CHECK_FALSE(fs::is_symlink(scene / "bouncing_ball_sheet.png.tmp"));
+}
+
+TEST_CASE("a CSV through a link to a full device is the device's error, and the link stays",
+          "[disk][csv]") {
+  // Written in place, as a device must be: a rename over the link would hide the full disk.
+  REQUIRE(fs::exists(kFullDisk));
+  const TemporaryDirectory directory;
+  const std::string csv = directory / "ball.csv";
+  fs::create_symlink(kFullDisk, csv);
+  const Outcome outcome =
+      i2d("run " + kScenes + "bouncing_ball.toml --steps 1 --csv " + csv, directory);
+  CHECK(outcome.exitCode == 1);
+  CHECK(outcome.err == "error: cannot write " + csv + ": " + kNoSpace + "\n");
+  CHECK(fs::is_symlink(csv));
+  CHECK(fs::is_character_file(kFullDisk));
+}
+
+TEST_CASE("a CSV written to a named pipe reaches its reader, and the pipe stays a pipe",
+          "[disk][csv]") {
+  const TemporaryDirectory directory;
+  const std::string pipe = directory / "ball.pipe";
+  REQUIRE(mkfifo(pipe.c_str(), 0600) == 0);
+  // Opened first without blocking, so i2d's open finds a reader; one step of rows fits in the
+  // pipe's buffer, so i2d finishes before anything is read.
+  const int reader = open(pipe.c_str(), O_RDONLY | O_NONBLOCK);
+  REQUIRE(reader >= 0);
+  const Outcome outcome =
+      i2d("run " + kScenes + "bouncing_ball.toml --steps 1 --csv " + pipe, directory);
+  std::string received(4096, '\0');
+  const ssize_t count = read(reader, received.data(), received.size());
+  close(reader);
+  received.resize(std::size_t(std::max<ssize_t>(count, 0)));
+  CHECK(outcome.exitCode == 0);
+  CHECK(fs::is_fifo(pipe));
+  CHECK(received.rfind("step,t,body,", 0) == 0);
+  CHECK(std::count(received.begin(), received.end(), '\n') == 3);
+}
+
+TEST_CASE("a CSV through a link replaces the file it names, and the link stays", "[disk][csv]") {
+  const TemporaryDirectory directory;
+  const std::string file = directory / "ball.csv";
+  const std::string link = directory / "latest.csv";
+  std::ofstream(file) << "an older run\n";
+  fs::create_symlink(file, link);
+  const Outcome outcome =
+      i2d("run " + kScenes + "bouncing_ball.toml --steps 1 --csv " + link, directory);
+  std::ifstream in(file);
+  std::string header;
+  std::getline(in, header);
+  CHECK(outcome.exitCode == 0);
+  CHECK(fs::is_symlink(link));
+  CHECK(header.rfind("step,t,body,", 0) == 0);
+}
+
+TEST_CASE("a CSV to standard output comes before the summary", "[disk][csv]") {
+  const TemporaryDirectory directory;
+  for (const std::string name : {"-", "/dev/stdout"}) {
+    const std::string out = directory / "out.txt";
+    const int status = std::system(
+        (kBinary + " run " + kScenes + "bouncing_ball.toml --steps 1 --csv " + name + " >" + out)
+            .c_str());
+    std::ifstream in(out);
+    std::ostringstream text;
+    text << in.rdbuf();
+    INFO("--csv " << name << ":\n" << text.str());
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+    CHECK(text.str().rfind("step,t,body,x,y,angle_rad,vx,vy,omega_rad_s\n0,0,ball,", 0) == 0);
+    CHECK(text.str().find("\nscene        bouncing_ball") != std::string::npos);
+  }
+  CHECK(fs::is_symlink("/dev/stdout"));
+}
+
+TEST_CASE("i2d's own output on a full disk is one error line and exit code 1", "[disk]") {
+  REQUIRE(fs::exists(kFullDisk));
+  const TemporaryDirectory directory;
+  const std::string err = directory / "stderr";
+  for (const std::string& command :
+       std::vector<std::string>{"check " + kScenes + "stack.toml", "presets", "--help",
+                                "run " + kScenes + "bouncing_ball.toml --steps 2"}) {
+    const int status =
+        std::system((kBinary + " " + command + " >" + kFullDisk + " 2>" + err).c_str());
+    std::ifstream in(err);
+    std::ostringstream text;
+    text << in.rdbuf();
+    INFO("i2d " << command);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 1);
+    CHECK(text.str() == "error: cannot write standard output: " + kNoSpace + "\n");
+  }
 }

@@ -1,13 +1,8 @@
-// Atomic CSV writing: the temporary file, the rows, the rename.
+// CSV writing: the header and the rows of the trajectory and of the contact forces.
 #include "csv_writer.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
-#include <cstdio>
-#include <cstring>
-
-#include "failures.h"
 
 namespace i2d {
 namespace {
@@ -30,19 +25,9 @@ std::string csvField(const std::string& text) {
 }  // namespace
 
 CsvWriter::CsvWriter(const std::string& path, const std::string& header)
-    : path_(path), temporaryPath_(path + ".tmp") {
-  out_.open(temporaryPath_, std::ios::binary | std::ios::trunc);
-  if (!out_) {
-    throw RunFailure("cannot write " + temporaryPath_ + ": " + std::strerror(errno));
-  }
-  out_ << header << '\n';
-  throwIfWriteFailed();
-}
-
-CsvWriter::~CsvWriter() {
-  if (committed_) return;
-  out_.close();
-  std::remove(temporaryPath_.c_str());
+    : path_(path), file_(path) {
+  file_.stream() << header << '\n';
+  file_.throwIfWriteFailed();
 }
 
 void CsvWriter::writeStep(long step, double time, const std::vector<impulse2d::Body>& bodies) {
@@ -57,10 +42,10 @@ void CsvWriter::writeStep(long step, double time, const std::vector<impulse2d::B
       line += ',';
       appendNumber(line, value);
     }
-    out_ << line << '\n';
+    file_.stream() << line << '\n';
     ++rowCount_;
   }
-  throwIfWriteFailed();
+  file_.throwIfWriteFailed();
 }
 
 void CsvWriter::writeContacts(long step, double time, double impulseTime,
@@ -95,24 +80,11 @@ void CsvWriter::writeContacts(long step, double time, double impulseTime,
         line += ',';
         appendNumber(line, value);
       }
-      out_ << line << '\n';
+      file_.stream() << line << '\n';
       ++rowCount_;
     }
   }
-  throwIfWriteFailed();
-}
-
-void CsvWriter::commit() {
-  out_.close();
-  throwIfWriteFailed();
-  if (std::rename(temporaryPath_.c_str(), path_.c_str()) != 0) {
-    throw RunFailure("cannot write " + path_ + ": " + std::strerror(errno));
-  }
-  committed_ = true;
-}
-
-void CsvWriter::throwIfWriteFailed() {
-  if (out_.fail()) throw RunFailure("cannot write " + temporaryPath_ + ": " + std::strerror(errno));
+  file_.throwIfWriteFailed();
 }
 
 }  // namespace i2d

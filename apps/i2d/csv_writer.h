@@ -1,14 +1,14 @@
 // The CSVs of `i2d run`, the trajectory (--csv) and the contact forces (--contacts), written
-// atomically: rows go to FILE.tmp, which becomes FILE only when commit() succeeds, so a failed
-// run never leaves a half-written FILE behind.
+// through an OutputFile: rows go to FILE.tmp, which becomes FILE only when commit() succeeds, so
+// a failed run never leaves a half-written FILE behind.
 #pragma once
 
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "impulse2d/body.h"
 #include "impulse2d/contact.h"
+#include "output_file.h"
 
 namespace i2d {
 
@@ -24,12 +24,8 @@ class CsvWriter {
       "step,t,body_a,body_b,point,x,y,nx,ny,normal_impulse_Ns,friction_impulse_Ns,normal_force_N,"
       "friction_force_N,mu,friction_limit_N,friction,load_a_x_N,load_a_y_N,load_b_x_N,load_b_y_N";
 
-  /// Opens FILE.tmp and writes the header; throws RunFailure when it cannot.
+  /// Opens the file (OutputFile) and writes the header; throws RunFailure when it cannot.
   explicit CsvWriter(const std::string& path, const std::string& header = kHeader);
-  /// Removes FILE.tmp unless commit() renamed it.
-  ~CsvWriter();
-  CsvWriter(const CsvWriter&) = delete;
-  CsvWriter& operator=(const CsvWriter&) = delete;
 
   /// One row per dynamic body: its centre of mass, angle and velocities at time t.
   void writeStep(long step, double time, const std::vector<impulse2d::Body>& bodies);
@@ -38,20 +34,16 @@ class CsvWriter {
   void writeContacts(long step, double time, double impulseTime,
                      const std::vector<impulse2d::Body>& bodies,
                      const std::vector<impulse2d::Manifold>& manifolds);
-  /// Closes FILE.tmp and renames it to FILE; throws RunFailure on any write error.
-  void commit();
+  /// Closes the file and renames FILE.tmp to FILE; throws RunFailure on any write error.
+  void commit() { file_.commit(); }
 
   const std::string& path() const { return path_; }
   long rowCount() const { return rowCount_; }
 
  private:
-  void throwIfWriteFailed();
-
   std::string path_;
-  std::string temporaryPath_;
-  std::ofstream out_;
+  OutputFile file_;
   long rowCount_ = 0;
-  bool committed_ = false;
 };
 
 }  // namespace i2d

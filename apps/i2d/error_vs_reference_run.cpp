@@ -1,11 +1,7 @@
 // `i2d run SCENE --error-vs-reference FILE`: the scene's method watched by the global reference;
 // per step the relative impulse error and the worst violation go to FILE, a summary to stdout.
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -17,6 +13,7 @@
 #include "impulse2d/solvers/error_vs_reference.h"
 #include "impulse2d/world.h"
 #include "output_directories.h"
+#include "output_file.h"
 #include "scene_setup.h"
 
 namespace i2d {
@@ -24,31 +21,20 @@ namespace {
 
 using impulse2d::ReferenceError;
 
-/// Writes FILE.tmp, then renames it: FILE appears only when complete, and on any failure the
-/// temporary file is removed. One row per velocity solve (substeps solve several times a step),
-/// at the solve's time; exact_answer says whether the reference found one (without it the row
-/// has no errors).
+/// One row per velocity solve (substeps solve several times a step), at the solve's time;
+/// exact_answer says whether the reference found one (without it the row has no errors). The
+/// file appears only when complete (OutputFile).
 void writeErrors(const std::string& path, const std::vector<ReferenceError>& errors,
                  double solveDt) {
-  const std::string temporary = path + ".tmp";
-  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  OutputFile file(path);
+  std::ostream& out = file.stream();
   out << "solve,t,points,impulse_error,velocity_error,violation,exact_answer\n";
   for (const ReferenceError& error : errors) {
     out << error.step + 1 << ',' << double(error.step + 1) * solveDt << ',' << error.points << ','
         << error.impulseError << ',' << error.velocityError << ',' << error.violation << ','
         << (error.noExactAnswer.empty() ? "found" : "none") << '\n';
   }
-  out.close();
-  if (!out) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw RunFailure("cannot write " + temporary + ": " + reason);
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw RunFailure("cannot write " + path + ": " + reason);
-  }
+  file.commit();
 }
 
 /// "median M, mean A, largest L" of the finite values (the steps with contact impulses).

@@ -71,7 +71,8 @@ options (a value follows the option or '=': --steps 100, --steps=100):
                         (the solver's own settings); repeatable, applied in order after
                         --solver, e.g. --set solver.velocity_iterations=20
                         --set world.gravity=[0,-1.62]; a bare word is a string
-  --csv FILE            write the trajectory; FILE appears only when complete
+  --csv FILE            write the trajectory; FILE appears only when complete; - or
+                        /dev/stdout is standard output, a device or pipe is written in place
   --contacts FILE       write every contact point's forces per recorded step: bodies, point,
                         normal, impulses and forces, mu, the limit mu N, static or sliding,
                         each body's applied load (header below); FILE appears when complete

@@ -1,5 +1,8 @@
 // i2d: the impulse2d command line. Dispatches to a command and turns each kind of failure into
 // one "error: ..." line on stderr and its exit code (failures.h).
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -56,13 +59,22 @@ int dispatch(const std::string& command, const std::vector<std::string>& argumen
   throw i2d::UsageError("unknown command '" + command + "' (see i2d --help)");
 }
 
+/// The command's exit code, unless what it printed could not be written (standard output on a
+/// full disk): then that is the failure, as for any other file i2d writes.
+int checkStandardOutput(int exitCode) {
+  std::cout.flush();
+  if (std::cout && std::fflush(stdout) == 0 && !std::ferror(stdout)) return exitCode;
+  const std::string reason = std::strerror(errno);
+  return fail("cannot write standard output: " + reason, i2d::kRunFailed);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) return fail("no command given (see i2d --help)", i2d::kBadCommandLine);
   const std::vector<std::string> arguments(argv + 2, argv + argc);
   try {
-    return dispatch(argv[1], arguments);
+    return checkStandardOutput(dispatch(argv[1], arguments));
   } catch (const i2d::UsageError& error) {
     return fail(error.what(), i2d::kBadCommandLine);
   } catch (const impulse2d::SceneError& error) {

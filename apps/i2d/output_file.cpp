@@ -1,0 +1,80 @@
+// Output files: a temporary file renamed into place, or a device written in place.
+#include "output_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <system_error>
+
+#include "failures.h"
+
+namespace i2d {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The file PATH ends in: when PATH is a symbolic link to an existing file, that file.
+std::string followLinks(const std::string& path) {
+  std::error_code error;
+  if (!fs::is_symlink(path, error)) return path;
+  const fs::path resolved = fs::canonical(path, error);
+  return error ? path : resolved.string();
+}
+
+/// True for a device, a pipe or a socket, which a rename would replace rather than update, and
+/// for any name under /dev or a process's open file under /proc (/dev/fd/3 redirected to a
+/// file), which a rename would take away from the process writing to it.
+bool writesInPlace(const std::string& path, const std::string& target) {
+  if (path.rfind("/dev/", 0) == 0 || target.rfind("/proc/", 0) == 0) return true;
+  std::error_code error;
+  const fs::file_status status = fs::status(target, error);
+  return !error && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
+}
+
+}  // namespace
+
+OutputFile::OutputFile(const std::string& path) : target_(followLinks(path)), written_(path) {
+  if (path == "-" || path == "/dev/stdout") {
+    out_ = &std::cout;
+    target_ = written_ = "standard output";
+    return;
+  }
+  std::error_code error;
+  if (fs::is_directory(target_, error)) {
+    throw RunFailure("cannot write " + path + ": " + std::strerror(EISDIR));
+  }
+  if (writesInPlace(path, target_)) {
+    target_ = path;
+  } else {
+    written_ = target_ + ".tmp";
+  }
+  file_.open(written_, std::ios::binary | std::ios::trunc);
+  if (!file_) throw RunFailure("cannot write " + written_ + ": " + std::strerror(errno));
+}
+
+OutputFile::~OutputFile() {
+  if (committed_ || written_ == target_) return;
+  file_.close();
+  std::remove(written_.c_str());
+}
+
+void OutputFile::throwIfWriteFailed() const {
+  if (out_->fail()) throw RunFailure("cannot write " + written_ + ": " + std::strerror(errno));
+}
+
+void OutputFile::commit() {
+  if (out_ == &file_) {
+    file_.close();
+  } else {
+    out_->flush();
+  }
+  throwIfWriteFailed();
+  if (written_ != target_ && std::rename(written_.c_str(), target_.c_str()) != 0) {
+    throw RunFailure("cannot write " + target_ + ": " + std::strerror(errno));
+  }
+  committed_ = true;
+}
+
+}  // namespace i2d
