@@ -128,6 +128,20 @@ TEST_CASE("run --plots writes the five figures as PNGs, and a traced step its ve
   CHECK(fs::exists(fs::path(plots) / "resting_box_step00013_velocity_error.png"));
 }
 
+TEST_CASE("plots of a run with no time to plot are drawn without a word on stderr",
+          "[outputs][plots]") {
+  // gnuplot warns of an empty range when a figure is one point or constant; the plots still
+  // draw, so the warning is not the user's concern.
+  const Scratch scratch;
+  const std::string plots = (scratch.path / "plots").string();
+  const Outcome outcome =
+      i2d("run " + kScenes + "resting_box.toml --steps 0 --plots " + plots, scratch);
+  CHECK(outcome.exitCode == 0);
+  CHECK(outcome.err.empty());
+  CHECK(readFile(fs::path(plots) / "resting_box_kinetic.png").substr(1, 3) == "PNG");
+  CHECK_FALSE(fs::exists(fs::path(plots) / "resting_box_plots.gp.log"));
+}
+
 TEST_CASE("an unwritable plot directory and an unknown animation are one error line each",
           "[outputs][errors]") {
   const Scratch scratch;

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <string>
+#include <system_error>
 
 #include "failures.h"
 
@@ -32,11 +34,22 @@ void writeOrFail(std::ofstream& file, const fs::path& path) {
   if (!file) throw RunFailure("cannot write '" + path.string() + "'");
 }
 
+/// Runs gnuplot on the script. Its messages go to SCRIPT.log: a plot of a run too short to have
+/// a range draws with a warning, which is no concern of the user's, so the log is kept and its
+/// first line shown only when gnuplot fails.
 void runGnuplot(const fs::path& script) {
-  const std::string command = "gnuplot " + shellQuoted(script.string());
+  const fs::path log = script.string() + ".log";
+  const std::string command =
+      "gnuplot " + shellQuoted(script.string()) + " 2>" + shellQuoted(log.string());
   if (std::system(command.c_str()) != 0) {
-    throw RunFailure("gnuplot failed (is it installed? scripts/setup installs it): " + command);
+    std::ifstream messages(log);
+    std::string first;
+    std::getline(messages, first);
+    throw RunFailure("gnuplot failed (is it installed? scripts/setup installs it): " + command +
+                     (first.empty() ? "" : ": " + first));
   }
+  std::error_code error;
+  fs::remove(log, error);
 }
 
 /// One block per series (gnuplot's `index`): step, time, kinetic, potential, total, contacts,
