@@ -1,6 +1,7 @@
 // Frames of one step, one per solver event, each telling what the event did.
 #include "impulse2d/render/trace.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -30,10 +31,22 @@ Vec2 pointVelocity(const std::vector<Body>& bodies, const Manifold& manifold, co
          bodies[std::size_t(manifold.bodyA)].velocityAt(point);
 }
 
+/// Drops the sign of a number printed as zero ("-0.000"), which only says round-off was
+/// negative.
+std::string withoutNegativeZeros(std::string text) {
+  for (std::size_t at = text.find("-0"); at != std::string::npos; at = text.find("-0", at + 1)) {
+    std::size_t end = at + 2;
+    while (end < text.size() && (text[end] == '0' || text[end] == '.')) ++end;
+    const bool allZero = end == text.size() || !std::isdigit(static_cast<unsigned char>(text[end]));
+    if (allZero) text.erase(at, 1);
+  }
+  return text;
+}
+
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
   char text[200];
   std::snprintf(text, sizeof text, pattern, a, b, c);
-  return text;
+  return withoutNegativeZeros(text);
 }
 
 /// Friction at the point after the event: static when |λt| stays inside μλn, dynamic on it.
@@ -56,8 +69,10 @@ EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
   EventStory story;
   char label[96];
   const bool velocity = event.phase == SolverEvent::Phase::Velocity;
-  std::snprintf(label, sizeof label, "%s %d: contact %d.%d", velocity ? "velocity" : "position",
-                event.iteration, event.manifold, event.point);
+  // Soft step counts its substeps, each of which sweeps the contacts once with bias.
+  const char* pass = !velocity ? "position" : solver == "soft_step" ? "substep" : "velocity";
+  std::snprintf(label, sizeof label, "%s %d: contact %d.%d", pass, event.iteration, event.manifold,
+                event.point);
   story.label = label;
   const std::string why = solver == "micro" ? ", the worst closing speed" : ", in sweep order";
   story.lines.push_back(story.label + why);

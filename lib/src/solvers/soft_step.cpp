@@ -163,6 +163,7 @@ void SoftStepSolver::solveVelocities(const StepContext& context) {
   report_ = SolveReport{};
   for (int substep = 0; substep < settings_.substeps; ++substep) {
     integrateVelocities();
+    if (context.observer) reportVelocitiesIntegrated(context);
     warmStart();
     report_.residual = solve(context, true, substep);
     integratePositions(h);
@@ -330,21 +331,60 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
   for (Constraint& constraint : constraints_) {
     SubstepBody& a = bodies_[constraint.bodyA];
     SubstepBody& b = bodies_[constraint.bodyB];
-    std::array<double, 2> before = {constraint.points[0].normalImpulse,
-                                    constraint.points[1].normalImpulse};
+    const std::array<PointImpulses, 2> before = {
+        PointImpulses{constraint.points[0].normalImpulse, constraint.points[0].tangentImpulse},
+        PointImpulses{constraint.points[1].normalImpulse, constraint.points[1].tangentImpulse}};
     solveNormals(constraint, a, b, useBias);
     if (!useBias || !frictionInRelax) solveFriction(constraint, a, b);
     for (int i = 0; i < constraint.pointCount; ++i) {
-      const ConstraintPoint& cp = constraint.points[i];
-      const double change = cp.normalImpulse - before[i];
+      const double change = constraint.points[i].normalImpulse - before[i].normal;
       largestChange = std::max(largestChange, std::abs(change));
-      if (context.observer && useBias) {
-        context.report({SolverEvent::Phase::Velocity, substep, constraint.manifold, i, 0.0, change,
-                        cp.tangentImpulse});
-      }
     }
+    if (context.observer && useBias) reportPoints(context, constraint, before, substep);
   }
   return largestChange;
+}
+
+// A traced sweep tells one event per point of the manifold just solved: the impulses it changed
+// by, the velocity change its normal row wanted before clamping (λ/m), and the bodies after the
+// manifold's solve as far as the substeps have moved them.
+void SoftStepSolver::reportPoints(const StepContext& context, const Constraint& constraint,
+                                  const std::array<PointImpulses, 2>& before, int substep) {
+  moveTracedBodies(context);
+  for (int i = 0; i < constraint.pointCount; ++i) {
+    const ConstraintPoint& cp = constraint.points[i];
+    const SolverEvent event{SolverEvent::Phase::Velocity,
+                            substep,
+                            constraint.manifold,
+                            i,
+                            cp.wantedImpulse / cp.normalMass,
+                            cp.normalImpulse - before[i].normal,
+                            cp.tangentImpulse - before[i].tangent};
+    context.observer->onSolverEvent(event, tracedBodies_, context.manifolds);
+  }
+}
+
+// Each substep's velocities after its gravity and loads: what the substep's contacts close with.
+void SoftStepSolver::reportVelocitiesIntegrated(const StepContext& context) {
+  moveTracedBodies(context);
+  context.observer->onVelocitiesIntegrated(tracedBodies_);
+}
+
+// The world's bodies move when the step ends (finishBodies); a trace sees copies moved now.
+void SoftStepSolver::moveTracedBodies(const StepContext& context) {
+  tracedBodies_ = context.bodies;
+  for (int i = 0; i < static_cast<int>(tracedBodies_.size()); ++i) {
+    if (tracedBodies_[i].isAwake()) moveBody(bodies_[i], tracedBodies_[i]);
+  }
+}
+
+// The body moved by what the substeps so far did to it: position, angle and velocities.
+void SoftStepSolver::moveBody(const SubstepBody& moved, Body& body) {
+  body.position += moved.deltaPosition;
+  body.angle += moved.deltaAngle;
+  body.velocity = moved.velocity;
+  body.angularVelocity = moved.angularVelocity;
+  body.updateCache();
 }
 
 // The separation now is the base plus how far the anchors moved along the (fixed) normal, a
@@ -375,6 +415,7 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SubstepBody& a, Subste
         -cp.normalMass * row.massScale * (vn + row.bias) - row.impulseScale * cp.normalImpulse;
     const double total = std::max(cp.normalImpulse + impulse, 0.0);
     const double change = total - cp.normalImpulse;
+    cp.wantedImpulse = impulse;
     cp.normalImpulse = total;
     cp.totalNormalImpulse += change;
     applyPairImpulse(a, b, cp.armA, cp.armB, change * normal);
@@ -517,13 +558,8 @@ void SoftStepSolver::finishBodies(const StepContext& context, double h) const {
   for (int i = 0; i < static_cast<int>(context.bodies.size()); ++i) {
     Body& body = context.bodies[i];
     if (!body.isAwake()) continue;
-    const SubstepBody& solverBody = bodies_[i];
-    body.position += solverBody.deltaPosition;
-    body.angle += solverBody.deltaAngle;
-    body.velocity = solverBody.velocity;
-    body.angularVelocity = solverBody.angularVelocity;
-    body.lastAcceleration = solverBody.velocityPerSubstep / h;
-    body.updateCache();
+    moveBody(bodies_[i], body);
+    body.lastAcceleration = bodies_[i].velocityPerSubstep / h;
   }
 }
 

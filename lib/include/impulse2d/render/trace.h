@@ -16,7 +16,8 @@ namespace impulse2d::render {
 
 /// What one event did, in the lecture's words: the lines a trace frame adds under its heads-up.
 struct EventStory {
-  std::string label;               ///< "velocity 3: contact 5.0": the thumbnail's caption
+  /// "velocity 3: contact 5.0" (soft step: "substep 3: ..."): the thumbnail's caption
+  std::string label;
   std::vector<std::string> lines;  ///< the heads-up lines
 };
 

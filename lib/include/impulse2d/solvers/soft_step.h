@@ -84,6 +84,7 @@ class SoftStepSolver : public ContactSolver {
     double totalNormalImpulse = 0.0;   ///< all normal impulse applied this step: did it touch?
     double totalTangentImpulse = 0.0;  ///< all friction impulse applied this step
     double relativeVelocity = 0.0;     ///< vn before the step, for restitution
+    double wantedImpulse = 0.0;        ///< the last normal solve's impulse before clamping
     Softness softness;                 ///< this point's spring
   };
   struct Constraint : SolverManifold {
@@ -94,14 +95,16 @@ class SoftStepSolver : public ContactSolver {
     bool atTouch = false;
     std::array<ConstraintPoint, 2> points;
   };
+  /// A point's normal and friction impulses.
+  struct PointImpulses {
+    double normal = 0.0;   ///< N s
+    double tangent = 0.0;  ///< N s
+  };
   /// What a point keeps from one step to the next: the impulses its last substep held, which warm
   /// start every substep of the next step (v3's `normalImpulse`; the step's totals, which every
   /// method reports in ContactPoint, are v3's `totalNormalImpulse`). They differ in a step with an
   /// impact, whose impulse the first substep spends.
-  struct LastSubstepImpulses {
-    double normal = 0.0;   ///< N s
-    double tangent = 0.0;  ///< N s
-  };
+  using LastSubstepImpulses = PointImpulses;
   /// What a point's normal row asks in this sweep: its bias velocity and its softness.
   struct NormalRow {
     double bias = 0.0;
@@ -120,6 +123,11 @@ class SoftStepSolver : public ContactSolver {
   void integrateVelocities();
   void warmStart();
   double solve(const StepContext& context, bool useBias, int substep);
+  void reportPoints(const StepContext& context, const Constraint& constraint,
+                    const std::array<PointImpulses, 2>& before, int substep);
+  void reportVelocitiesIntegrated(const StepContext& context);
+  void moveTracedBodies(const StepContext& context);
+  static void moveBody(const SubstepBody& moved, Body& body);
   void solveNormals(Constraint& constraint, SubstepBody& a, SubstepBody& b, bool useBias);
   NormalRow normalRow(const Constraint& constraint, const ConstraintPoint& cp, const SubstepBody& a,
                       const SubstepBody& b, bool useBias) const;
@@ -139,6 +147,8 @@ class SoftStepSolver : public ContactSolver {
   std::vector<SubstepBody> bodies_;
   std::vector<Constraint> constraints_;
   PointMemory<LastSubstepImpulses> lastSubstep_;
+  /// A traced step's copies of the world's bodies, moved as far as the substeps have moved them.
+  std::vector<Body> tracedBodies_;
   double inverseSubstep_ = 0.0;
   double pushVelocity_ = 0.0;
   SolveReport report_;
