@@ -104,8 +104,8 @@ class StateCatcher : public ContactSolver {
 /// s: when the probed step may be caught, in the order tried, once the scene has settled. Rain's
 /// heap is settled at its settledTime (4 s) but still creeps, and there the reference's active set
 /// cycles; from 5 s on it mostly answers in one or two factorizations, but not at every step
-/// (since 2026-11-27 step 300 reaches the factorization limit, 315 to 360 answer), so later
-/// steps are tried in turn and the one probed is printed.
+/// (step 300 reaches the factorization limit, 315 to 360 answer), so later steps are tried in
+/// turn and the one probed is printed.
 std::vector<double> probeTimes(const Scene& scene) {
   if (scene.name == "rain") return {5.0, 5.25, 5.5, 5.75};
   return {settledTime(scene)};

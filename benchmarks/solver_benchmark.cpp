@@ -168,7 +168,7 @@ void printTargetVerdict(const std::vector<RunFigures>& pyramid) {
   }
 }
 
-/// Issue 15's soft step target: no more than Box2D's time per step, settled drift ≤ 1 mm.
+/// Soft step's target: no more than Box2D's time per step, settled drift ≤ 1 mm.
 void printSoftStepVerdict(const std::vector<RunFigures>& pyramid) {
   std::printf("\n### Target on pyramid20: soft step against Box2D 8+3, same run\n\n");
   std::printf(
@@ -209,7 +209,7 @@ void printAnalyticTable(const std::vector<std::string>& solvers) {
   std::printf("\n");
 }
 
-/// Issue 15's targets: time per step / Box2D's at 8+3 iterations, and at the defaults.
+/// Sequential impulses' targets: time per step / Box2D's at 8+3 iterations, and at the defaults.
 constexpr double kSpeedTargetAtBox2dIterations = 0.8;
 constexpr double kSpeedTargetAtDefaults = 1.0;
 
@@ -232,7 +232,7 @@ void printSpeedRow(const std::string& sceneName, const std::vector<RunFigures>& 
   std::printf("\n");
 }
 
-/// Issue 15: sequential impulses against Box2D 2.4.1 in one alternating run per scene.
+/// Sequential impulses against Box2D 2.4.1 in one alternating run per scene.
 /// Instructions per step come from the --callgrind mode (docs/sequential-impulses.md).
 void printSpeedTable(const std::vector<std::string>& sceneNames) {
   const std::vector<MethodRun> methods = {kStackMethods[0], kStackMethods[1], kStackMethods[2],

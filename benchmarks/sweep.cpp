@@ -4,7 +4,7 @@
 // the points to OUTDIR/sweep.csv, pareto.csv and scaling.csv (docs/charts/*.gp draw them), and the
 // tables to stdout as Markdown (docs/performance.md).
 //
-//   sweep OUTDIR            the full sweep (13 minutes on 2 cores, 2026-11-26)
+//   sweep OUTDIR            the full sweep (about 13 minutes on 2 cores)
 //   sweep --quick OUTDIR    one iteration count and one time step per method, in seconds
 //   sweep --methods micro --scenes pyramid40,rain OUTDIR
 //                           only those methods on those panels (comma-separated lists, either

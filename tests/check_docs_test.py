@@ -19,6 +19,8 @@ CLEAN = {
     "docs/design/note.md": "# A decision\n\n**Choice.** The queue: 12 % faster on `scripts/benchmarks`.\n",
     "CHANGELOG.md": "# Changelog\n\n## 0.1 (2026-11-27)\n\n- Fixed in session 41 (issue 13): history is allowed here.\n",
     "lib/src/code.cpp": "// Resolves the worst contact first.\nint main() { return 0; }\n",
+    "scripts/page": "echo 'a{border:1px solid #999}' \"$#\"\n",
+    "tests/fuzz_corpus/scene_loader/input": "# 2026-11-27 #13: a fuzzer's input, not prose\n",
 }
 
 OFFENCES = {
@@ -33,6 +35,12 @@ OFFENCES = {
     ),
     "an issue number in a design note": (
         "docs/design/note.md", "Dropped in issue 13.\n", "docs/design/note.md:1", "an issue number"
+    ),
+    "a date in a test's comment": (
+        "tests/stack_test.cpp", "// Holds since 2026-11-27.\n", "tests/stack_test.cpp:1", "a date"
+    ),
+    "an issue number in a benchmark": (
+        "benchmarks/bench.cpp", "/// Issue 15's target.\n", "benchmarks/bench.cpp:1", "an issue number"
     ),
     "a run-log phrase": ("docs/page.md", "This run was faster tonight.\n", "docs/page.md:1", "a run-log phrase"),
     "a long line": ("docs/page.md", "word " * 50 + "\n", "docs/page.md:1", "characters"),

@@ -151,8 +151,8 @@ FirstBounce flatBoxBounce(const std::string& solver, double restitution, double 
 // a different closing velocity. Sequential impulses and the reference bounce off the closing
 // speed before the step, which includes one step of gravity: the apex rises by about
 // (1 + g·dt/v)² − 1 = 1.9 % at 240 Hz from 1 m (v = 4.4 m/s); 3 % allows that and the sampling.
-// Friction plays no part in a straight landing: a frictionless pair bounces the same (micro took
-// such a pair point by point until 2026-11-26 and left at 0.76 of e²h with e = 0.8). Soft step
+// Friction plays no part in a straight landing: a frictionless pair bounces the same (taken point
+// by point, such a pair leaves at 0.76 of e²h with e = 0.8). Soft step
 // bounces its pair as one block (pair_restitution); its speculative contact stops the box at the
 // surface and the bounce leaves without the step's gravity, as its ball's does (0.98 of e²h).
 TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-bounces]") {

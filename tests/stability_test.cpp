@@ -87,9 +87,9 @@ TEST_CASE(
   CHECK(holds("heavy_on_light", "micro − pairs", 250));
   CHECK(fails("heavy_on_light", "micro − pairs", 500));
   // Without friction nothing holds the light boxes under the heavy one but symmetry: resolving a
-  // flat contact's corners together (frictionless pairs too, since 2026-11-26) pushes nothing
-  // sideways, and micro holds to the end of the search; one corner at a time the light boxes
-  // were squeezed out from a ratio of about 115.
+  // flat contact's corners together (frictionless pairs too) pushes nothing sideways, and micro
+  // holds to the end of the search; one corner at a time the light boxes were squeezed out from a
+  // ratio of about 115.
   CHECK(holds("heavy_on_light", "micro − friction", 1000));
 }
 

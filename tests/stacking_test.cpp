@@ -101,7 +101,7 @@ TEST_CASE("a 10-row pyramid stands for 10 s", "[stack][pyramid][micro]") {
 // Mass ratios: a light box under a heavy one is where an iterative solver struggles (the heavy
 // box's weight must pass through the light one). Box2D 2.4.1 at its defaults lets light-under-
 // heavy columns (1, 10, 100; 1, 100; 1, 30, 1, 30) settle by 1.0 to 3.9 cm between 1 s and 5 s at
-// 60 and 240 Hz and holds heavy-under-light ones (a probe outside the repository, 2026-11-27);
+// 60 and 240 Hz and holds heavy-under-light ones (a probe outside the repository);
 // micro and the reference hold them all still with every contact carrying the weight above it.
 // Sequential impulses hold the graded columns; the alternating one is its failure mode (next test).
 TEST_CASE("columns with mass ratios of 100 stand, every contact carrying the weight above it",
