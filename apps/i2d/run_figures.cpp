@@ -58,7 +58,7 @@ impulse2d::render::FigureTable figureTable(const std::vector<StepFigures>& figur
 void EventLog::onSolverEvent(const impulse2d::SolverEvent& event,
                              const std::vector<impulse2d::Body>&,
                              const std::vector<impulse2d::Manifold>&) {
-  if (event.phase != impulse2d::SolverEvent::Phase::Velocity) return;
+  if (!event.changesVelocity()) return;
   errors_.push_back(std::abs(event.desiredChange));
   iterations_.push_back(event.iteration);
 }

@@ -53,7 +53,7 @@ class World::WorldStages : public StepStages {
   WorldStages(World& world, double h) : world_(world), h_(h) {}
   void integrateVelocities() override {
     world_.integrateVelocities(h_);
-    if (world_.observer_) world_.observer_->onVelocitiesIntegrated(world_.bodies_);
+    if (world_.observer_) world_.observer_->onVelocitiesChanged(world_.bodies_);
   }
   void integratePositions() override { world_.integratePositions(h_); }
   void clearForces() override { world_.clearForces(); }

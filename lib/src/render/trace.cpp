@@ -61,20 +61,34 @@ std::string frictionLine(const Manifold& manifold, const ContactPoint& point) {
                 limit, manifold.friction);
 }
 
+/// "velocity 3: contact 5.0": the pass, its count (sweep, impulse, move, or soft step's substep)
+/// and the point. Soft step bounces after its substeps: "restitution: contact 5.0".
+std::string eventLabel(const SolverEvent& event, const std::string& solver) {
+  char label[96];
+  if (event.phase == SolverEvent::Phase::Restitution) {
+    std::snprintf(label, sizeof label, "restitution: contact %d.%d", event.manifold, event.point);
+    return label;
+  }
+  const char* pass = !event.changesVelocity() ? "position"
+                     : solver == "soft_step"  ? "substep"
+                                              : "velocity";
+  std::snprintf(label, sizeof label, "%s %d: contact %d.%d", pass, event.iteration, event.manifold,
+                event.point);
+  return label;
+}
+
 }  // namespace
 
 EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
                      const std::vector<Body>& after, const std::vector<Manifold>& manifolds,
                      const std::string& solver, double dt) {
   EventStory story;
-  char label[96];
-  const bool velocity = event.phase == SolverEvent::Phase::Velocity;
-  // Soft step counts its substeps, each of which sweeps the contacts once with bias.
-  const char* pass = !velocity ? "position" : solver == "soft_step" ? "substep" : "velocity";
-  std::snprintf(label, sizeof label, "%s %d: contact %d.%d", pass, event.iteration, event.manifold,
-                event.point);
-  story.label = label;
-  const std::string why = solver == "micro" ? ", the worst closing speed" : ", in sweep order";
+  const bool velocity = event.changesVelocity();
+  story.label = eventLabel(event, solver);
+  const std::string why = event.phase == SolverEvent::Phase::Restitution
+                              ? ", after the substeps: the bounce"
+                          : solver == "micro" ? ", the worst closing speed"
+                                              : ", in sweep order";
   story.lines.push_back(story.label + why);
   if (!velocity) {
     story.lines.push_back(format("moved the bodies apart: %.3f mm of penetration removed",
@@ -122,11 +136,11 @@ void TraceRecorder::onSolverEvent(const SolverEvent& event, const std::vector<Bo
                                      [&](Drawing& drawing, DrawnKinds& drawn) {
                                        drawHighlight(drawing, drawn, event, bodies, manifolds);
                                      });
-  writer_.write(info.step, frame, event.phase == SolverEvent::Phase::Velocity);
+  writer_.write(info.step, frame, event.changesVelocity());
   before_ = bodies;
 }
 
-void TraceRecorder::onVelocitiesIntegrated(const std::vector<Body>& bodies) {
+void TraceRecorder::onVelocitiesChanged(const std::vector<Body>& bodies) {
   before_ = bodies;
 }
 
@@ -150,7 +164,7 @@ void TraceRecorder::drawHighlight(Drawing& drawing, DrawnKinds& drawn, const Sol
   drawWorldArrow(drawing, camera, point, forces.metresPerNewton / forces.dt * impulse, highlight,
                  settings);
   drawn.highlight = true;
-  if (event.phase != SolverEvent::Phase::Velocity || before_.size() != bodies.size()) return;
+  if (!event.changesVelocity() || before_.size() != bodies.size()) return;
   drawing.setRole("velocity before");
   const double beforeLength = drawWorldArrow(
       drawing, camera, point, settings.velocityScale * pointVelocity(before_, manifold, point),

@@ -163,14 +163,14 @@ void SoftStepSolver::solveVelocities(const StepContext& context) {
   report_ = SolveReport{};
   for (int substep = 0; substep < settings_.substeps; ++substep) {
     integrateVelocities();
-    if (context.observer) reportVelocitiesIntegrated(context);
+    if (context.observer) reportVelocitiesChanged(context);
     warmStart();
     report_.residual = solve(context, true, substep);
     integratePositions(h);
     if (settings_.relax) report_.residual = solve(context, false, substep);
     report_.iterations = substep + 1;
   }
-  if (settings_.restitution) applyRestitution();
+  if (settings_.restitution) applyRestitution(context);
   storeImpulses(context);
   finishBodies(context, h);
 }
@@ -364,14 +364,17 @@ void SoftStepSolver::reportPoints(const StepContext& context, const Constraint& 
   }
 }
 
-// Each substep's velocities after its gravity and loads: what the substep's contacts close with.
-void SoftStepSolver::reportVelocitiesIntegrated(const StepContext& context) {
+// The velocities the next traced event starts from: a substep's after its gravity and loads, or
+// the last relax sweep's before the restitution pass.
+void SoftStepSolver::reportVelocitiesChanged(const StepContext& context) {
   moveTracedBodies(context);
-  context.observer->onVelocitiesIntegrated(tracedBodies_);
+  context.observer->onVelocitiesChanged(tracedBodies_);
 }
 
-// The world's bodies move when the step ends (finishBodies); a trace sees copies moved now.
+// The world's bodies move when the step ends (finishBodies); a trace sees copies moved now, and
+// the manifolds' impulses as they stand.
 void SoftStepSolver::moveTracedBodies(const StepContext& context) {
+  writeTotals(context);
   tracedBodies_ = context.bodies;
   for (int i = 0; i < static_cast<int>(tracedBodies_.size()); ++i) {
     if (tracedBodies_[i].isAwake()) moveBody(bodies_[i], tracedBodies_[i]);
@@ -465,16 +468,52 @@ bool SoftStepSolver::bounces(const ConstraintPoint& cp) const {
 // point as Box2D v3 does. With frictionInRestitution its friction is then solved once more, now
 // bounded with the bounce's impulse in the normal one, and the bounce again, since at a corner,
 // or at a face's two corners carrying unequal loads, friction also changes the normal velocities.
-void SoftStepSolver::applyRestitution() {
+void SoftStepSolver::applyRestitution(const StepContext& context) {
+  if (context.observer) reportVelocitiesChanged(context);
   for (Constraint& constraint : constraints_) {
     if (constraint.restitution == 0.0) continue;
     SubstepBody& a = bodies_[constraint.bodyA];
     SubstepBody& b = bodies_[constraint.bodyB];
+    const BounceStart start = context.observer ? bounceStart(constraint, a, b) : BounceStart{};
     const bool bounced =
         applyPairRestitution(constraint, a, b) || applyPointRestitution(constraint, a, b);
-    if (!bounced || !settings_.frictionInRestitution) continue;
-    solveFriction(constraint, a, b);
-    if (!applyPairRestitution(constraint, a, b)) applyPointRestitution(constraint, a, b);
+    if (bounced && settings_.frictionInRestitution) {
+      solveFriction(constraint, a, b);
+      if (!applyPairRestitution(constraint, a, b)) applyPointRestitution(constraint, a, b);
+    }
+    if (bounced && context.observer) reportBounce(context, constraint, start);
+  }
+}
+
+SoftStepSolver::BounceStart SoftStepSolver::bounceStart(const Constraint& constraint,
+                                                        const SubstepBody& a,
+                                                        const SubstepBody& b) const {
+  BounceStart start;
+  for (int i = 0; i < constraint.pointCount; ++i) {
+    const ConstraintPoint& cp = constraint.points[i];
+    start.totals[i] = {cp.totalNormalImpulse, cp.totalTangentImpulse};
+    const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(constraint.normal);
+    start.wantedChange[i] = -constraint.restitution * cp.relativeVelocity - vn;
+  }
+  return start;
+}
+
+// A traced bounce tells one event per point that bounced: what the restitution pass (and the
+// friction solved with it) added to the step's impulses, and the bodies after it.
+void SoftStepSolver::reportBounce(const StepContext& context, const Constraint& constraint,
+                                  const BounceStart& start) {
+  moveTracedBodies(context);
+  for (int i = 0; i < constraint.pointCount; ++i) {
+    const ConstraintPoint& cp = constraint.points[i];
+    if (!bounces(cp)) continue;
+    const SolverEvent event{SolverEvent::Phase::Restitution,
+                            settings_.substeps,
+                            constraint.manifold,
+                            i,
+                            start.wantedChange[i],
+                            cp.totalNormalImpulse - start.totals[i].normal,
+                            cp.totalTangentImpulse - start.totals[i].tangent};
+    context.observer->onSolverEvent(event, tracedBodies_, context.manifolds);
   }
 }
 
@@ -539,19 +578,30 @@ bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SubstepBody& a
 // summed), as every method reports them, the last substep's to warm start the next step from,
 // and the friction state of each point.
 void SoftStepSolver::storeImpulses(const StepContext& context) {
+  writeTotals(context);
+  for (const Constraint& constraint : constraints_) {
+    if (constraint.atTouch) context.manifolds[constraint.manifold].normal = constraint.normal;
+    for (int i = 0; i < constraint.pointCount; ++i) {
+      const ConstraintPoint& cp = constraint.points[i];
+      lastSubstep_.store(constraint.manifold, i, {cp.normalImpulse, cp.tangentImpulse});
+    }
+  }
+  lastSubstep_.remember(context.manifolds, context.bodies);
+}
+
+// The step's impulses so far into the manifolds, and each point's friction state from its last
+// substep: at the step's end, and for a traced event as it happens.
+void SoftStepSolver::writeTotals(const StepContext& context) const {
   for (const Constraint& constraint : constraints_) {
     Manifold& manifold = context.manifolds[constraint.manifold];
-    if (constraint.atTouch) manifold.normal = constraint.normal;
     for (int i = 0; i < constraint.pointCount; ++i) {
       const ConstraintPoint& cp = constraint.points[i];
       ContactPoint& point = manifold.points[i];
       point.normalImpulse = cp.totalNormalImpulse;
       point.tangentImpulse = cp.totalTangentImpulse;
       point.friction = frictionStateOf(cp.normalImpulse, cp.tangentImpulse, manifold.friction, 0.0);
-      lastSubstep_.store(constraint.manifold, i, {cp.normalImpulse, cp.tangentImpulse});
     }
   }
-  lastSubstep_.remember(context.manifolds, context.bodies);
 }
 
 void SoftStepSolver::finishBodies(const StepContext& context, double h) const {

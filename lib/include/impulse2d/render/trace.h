@@ -37,7 +37,7 @@ class TraceRecorder : public SolverObserver {
   void onSolverEvent(const SolverEvent& event, const std::vector<Body>& bodies,
                      const std::vector<Manifold>& manifolds) override;
   /// The first event's "before" is the step's velocities after its forces, as its contacts close.
-  void onVelocitiesIntegrated(const std::vector<Body>& bodies) override;
+  void onVelocitiesChanged(const std::vector<Body>& bodies) override;
 
  private:
   void drawHighlight(Drawing& drawing, DrawnKinds& drawn, const SolverEvent& event,

@@ -105,6 +105,12 @@ class SoftStepSolver : public ContactSolver {
   /// method reports in ContactPoint, are v3's `totalNormalImpulse`). They differ in a step with an
   /// impact, whose impulse the first substep spends.
   using LastSubstepImpulses = PointImpulses;
+  /// A traced bounce's start, per point: the step's impulses so far, and the velocity change
+  /// along the normal that leaves it separating at −e times its closing speed before the step.
+  struct BounceStart {
+    std::array<PointImpulses, 2> totals;
+    std::array<double, 2> wantedChange{};
+  };
   /// What a point's normal row asks in this sweep: its bias velocity and its softness.
   struct NormalRow {
     double bias = 0.0;
@@ -125,7 +131,7 @@ class SoftStepSolver : public ContactSolver {
   double solve(const StepContext& context, bool useBias, int substep);
   void reportPoints(const StepContext& context, const Constraint& constraint,
                     const std::array<PointImpulses, 2>& before, int substep);
-  void reportVelocitiesIntegrated(const StepContext& context);
+  void reportVelocitiesChanged(const StepContext& context);
   void moveTracedBodies(const StepContext& context);
   static void moveBody(const SubstepBody& moved, Body& body);
   void solveNormals(Constraint& constraint, SubstepBody& a, SubstepBody& b, bool useBias);
@@ -133,7 +139,11 @@ class SoftStepSolver : public ContactSolver {
                       const SubstepBody& b, bool useBias) const;
   void solveFriction(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
   void integratePositions(double h);
-  void applyRestitution();
+  void applyRestitution(const StepContext& context);
+  BounceStart bounceStart(const Constraint& constraint, const SubstepBody& a,
+                          const SubstepBody& b) const;
+  void reportBounce(const StepContext& context, const Constraint& constraint,
+                    const BounceStart& start);
   bool bounces(const ConstraintPoint& cp) const;
   double bounceBase(const ConstraintPoint& cp) const;
   void setBounceImpulse(const Constraint& constraint, ConstraintPoint& cp, SubstepBody& a,
@@ -141,6 +151,7 @@ class SoftStepSolver : public ContactSolver {
   bool applyPairRestitution(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
   bool applyPointRestitution(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
   void storeImpulses(const StepContext& context);
+  void writeTotals(const StepContext& context) const;
   void finishBodies(const StepContext& context, double h) const;
 
   SoftStepSettings settings_;
