@@ -10,6 +10,7 @@
 #include "impulse2d/render/frame_writer.h"
 #include "impulse2d/render/panels.h"
 #include "impulse2d/render/trace.h"
+#include "impulse2d/render/viewer.h"
 #include "render_fixtures.h"
 
 using namespace impulse2d;
@@ -188,4 +189,22 @@ TEST_CASE("Panels sit in the grid that fills a 16:9 slide best, under their labe
   CHECK(pixels.at(settings.spacing + 80, y) == numberColour(0));
   CHECK(pixels.at(2 * settings.spacing + 240, y) == numberColour(30));
   CHECK(pixels.at(settings.spacing + 1, settings.spacing + 1) == settings.colours.sheetLabel);
+}
+
+TEST_CASE("The viewer page's script holds a scene name with a line break, quotes and a tag",
+          "[frames][viewer]") {
+  // The names are written into the script as JSON strings: a raw line break would end the
+  // string, a quote the literal, a "<" could begin "</script>". scripts/viewer-test loads a page
+  // of such a name in a browser.
+  const std::string name = "two\nlines \"quoted\" <b>";
+  const fs::path root = test::scratchDirectory("viewer_names");
+  FrameWriter writer(root, name, 1);
+  writer.write(0, numberedFrame(0));
+  std::ifstream in(writeViewer(writer, name, FigureTable{}, 30.0));
+  std::string line;
+  std::string frames;
+  while (std::getline(in, line)) {
+    if (line.rfind("const frames = ", 0) == 0) frames = line;
+  }
+  CHECK(frames == "const frames = [\"two\\u000alines \\\"quoted\\\" \\u003cb>_00000.png\"];");
 }

@@ -3,6 +3,7 @@
 #include "impulse2d/render/viewer.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -10,14 +11,19 @@ namespace impulse2d::render {
 
 namespace {
 
+/// A JSON string a script can hold: quotes and backslashes escaped, control characters (a line
+/// break in a file name) as \u00XX, and "<" as \u003c, so "</script>" never ends the script.
 std::string jsonString(const std::string& text) {
   std::string quoted = "\"";
   for (const char c : text) {
-    if (c == '"' || c == '\\') quoted += '\\';
-    if (c == '<') {
-      quoted += "\\u003c";  // never "</script>" inside the script
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || c == '<') {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", byte);
+      quoted += escaped;
       continue;
     }
+    if (c == '"' || c == '\\') quoted += '\\';
     quoted += c;
   }
   return quoted + "\"";
@@ -103,10 +109,19 @@ const char* const kPageScript = R"(
 const slider = document.getElementById("slider");
 const image = document.getElementById("frame");
 slider.max = frames.length - 1;
+// File names are the scene's and may hold any character: each becomes one encoded path segment,
+// and elements are built, never parsed from text.
 plots.forEach((plot, i) => {
-  document.getElementById("plots").insertAdjacentHTML("beforeend",
-      '<div class="plot"><img src="' + plot.file + '" alt="plot"><div class="cursor" id="cursor-' +
-      i + '"></div></div>');
+  const box = document.createElement("div");
+  box.className = "plot";
+  const picture = document.createElement("img");
+  picture.src = encodeURIComponent(plot.file);
+  picture.alt = "plot";
+  const cursor = document.createElement("div");
+  cursor.className = "cursor";
+  cursor.id = "cursor-" + i;
+  box.append(picture, cursor);
+  document.getElementById("plots").append(box);
 });
 // The cursor of each plot at the frame's time, as a percentage of the plot's width.
 function moveCursors(index) {
@@ -120,7 +135,7 @@ function moveCursors(index) {
 function show(index) {
   index = Math.max(0, Math.min(frames.length - 1, index));
   slider.value = index;
-  image.src = frames[index];
+  image.src = encodeURIComponent(frames[index]);
   document.getElementById("label").textContent =
       "frame " + index + " of " + (frames.length - 1) + ", step " + steps[index];
   const row = figures.rows[index] || [];
