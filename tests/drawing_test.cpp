@@ -263,3 +263,22 @@ TEST_CASE("a trace frame draws the event's impulse at the run's force scale", "[
   REQUIRE(impulses.size() == 1);
   CHECK(length(impulses[0]) == Approx(0.02 / renderer.forces().dt * pixelsPerNewton).epsilon(1e-9));
 }
+
+TEST_CASE("text that is not UTF-8 is drawn with replacement marks, and drawing goes on after it",
+          "[frame][text]") {
+  // A scene named after a file in another encoding: Cairo refuses such text, and after a refusal
+  // it draws nothing more on the frame.
+  Picture picture(200, 40);
+  {
+    Drawing drawing(picture);
+    drawing.text("bad \xff name \xe2\x82", Vec2(2.0, 2.0), 14.0, Color{0, 0, 0, 255});
+    drawing.rectangle(Vec2(150.0, 0.0), Vec2(50.0, 40.0), Color{255, 0, 0, 255});
+  }
+  const Image image = rasterise(picture);
+  CHECK(image.at(175, 20) == Color{255, 0, 0, 255});
+  int inked = 0;
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x < 140; ++x) inked += image.at(x, y).a > 0;
+  }
+  CHECK(inked > 100);
+}

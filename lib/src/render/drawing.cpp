@@ -32,10 +32,55 @@ struct Run {
   bool subscript = false;
 };
 
+/// The length of the valid UTF-8 character at text[i] (RFC 3629: no overlong forms, no
+/// surrogates, nothing past U+10FFFF), or 0 when none starts there.
+std::size_t utf8Length(const std::string& text, std::size_t i) {
+  const auto byte = [&text](std::size_t k) {
+    return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u;
+  };
+  const unsigned lead = byte(i);
+  if (lead < 0x80) return 1;
+  std::size_t length = 0;
+  unsigned low = 0x80;
+  unsigned high = 0xBF;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3;
+    low = lead == 0xE0 ? 0xA0 : low;
+    high = lead == 0xED ? 0x9F : high;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4;
+    low = lead == 0xF0 ? 0x90 : low;
+    high = lead == 0xF4 ? 0x8F : high;
+  } else {
+    return 0;
+  }
+  if (byte(i + 1) < low || byte(i + 1) > high) return 0;
+  for (std::size_t k = 2; k < length; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+  }
+  return length;
+}
+
+/// The text with each byte that starts no valid UTF-8 character replaced by U+FFFD. Cairo refuses
+/// invalid UTF-8 (a file name in another encoding), and a refusal stops all later drawing on the
+/// frame: its heads-up, legend and arrows would vanish.
+std::string validUtf8(const std::string& text) {
+  std::string valid;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t length = utf8Length(text, i);
+    valid.append(length ? text.substr(i, length) : std::string("\xEF\xBF\xBD"));
+    i += length ? length : 1;
+  }
+  return valid;
+}
+
 /// "λ_n" -> {"λ", "n" (subscript)}; "λ_{ab}c" -> {"λ", "ab" (subscript), "c"}. Only a '_'
 /// after a symbol (a character beyond ASCII) starts a subscript, so names such as "pushed_box"
 /// are drawn as they are.
-std::vector<Run> parseMarkup(const std::string& text) {
+std::vector<Run> parseMarkup(const std::string& markup) {
+  const std::string text = validUtf8(markup);
   std::vector<Run> runs{{"", false}};
   for (std::size_t i = 0; i < text.size(); ++i) {
     const bool afterSymbol = i > 0 && (static_cast<unsigned char>(text[i - 1]) & 0x80) != 0;
