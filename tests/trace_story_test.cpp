@@ -68,14 +68,15 @@ long firstStepWithEvent(const Scene& scene, double& speedBefore,
 }
 
 /// The closing speed and the speed after that `step`'s first event whose label begins with
-/// `label` states, tracing `world` through that step.
-std::pair<double, double> firstClosingSpeeds(World& world, long step,
+/// `label` states, tracing `world` through that step into a scratch directory of its own (ctest
+/// runs the test cases side by side).
+std::pair<double, double> firstClosingSpeeds(World& world, long step, const std::string& scratch,
                                              const std::string& label = "") {
   RenderSettings settings;
   FrameRenderer renderer(fitCamera(world.bodies(), ViewDef{}, settings), "drop", settings);
   DrawingLog log;
   renderer.setLog(&log);
-  traceStep(world, step, renderer, test::scratchDirectory("trace_story_" + world.solverName()));
+  traceStep(world, step, renderer, test::scratchDirectory(scratch));
   bool labelSeen = label.empty();
   for (const DrawnShape& shape : log) {
     if (shape.kind != DrawnShape::Kind::Text) continue;
@@ -102,7 +103,7 @@ TEST_CASE("a traced bounce states the closing speed the contact closes with", "[
     const long step = firstStepWithEvent(scene, speedBefore);
     REQUIRE(step < 60);
     std::unique_ptr<World> world = buildWorld(scene);
-    const auto [closing, after] = firstClosingSpeeds(*world, step);
+    const auto [closing, after] = firstClosingSpeeds(*world, step, "trace_story_" + solver);
     // The speed at the end of the last step plus the gravity of this step, g·dt (0.164 m/s), or
     // of soft step's first substep, g·dt/4; to the last digit the line prints (mm/s).
     const double h = solver == "soft_step" ? scene.world.dt / scene.solverSettings.softStep.substeps
@@ -124,7 +125,8 @@ TEST_CASE("a traced soft step shows its bounce leaving at -e times the closing s
   const long step = firstStepWithEvent(scene, speedBefore, SolverEvent::Phase::Restitution);
   REQUIRE(step < 60);
   std::unique_ptr<World> traced = buildWorld(scene);
-  const auto [closing, after] = firstClosingSpeeds(*traced, step, "restitution: contact");
+  const auto [closing, after] =
+      firstClosingSpeeds(*traced, step, "trace_story_bounce", "restitution: contact");
   const double e = 0.5;
   CHECK(closing == Approx(0.0).margin(1e-3));
   CHECK(after == Approx(-e * speedBefore).margin(1e-3));
