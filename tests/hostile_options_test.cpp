@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "i2d_process.h"
 
@@ -47,6 +49,29 @@ TEST_CASE("a failed write leaves no temporary file beside its target", "[outputs
   const Outcome csv = i2d("run " + kBox + " --csv " + (scratch / "taken"), scratch);
   CHECK(csv.exitCode == 1);
   CHECK(scratch.entries() == std::vector<std::string>{"taken"});
+}
+
+TEST_CASE("--csv and --contacts naming one file by two names are refused before the run",
+          "[outputs][errors]") {
+  // Each would rename its temporary file over the other's: the second rename failed after the
+  // run, leaving the file holding the contacts; two to standard output interleaved their rows.
+  const Scratch scratch;
+  writeFile(scratch / "old.csv", "an older run\n");
+  fs::create_symlink(scratch / "old.csv", scratch / "link.csv");
+  for (const auto& [csv, contacts] : std::vector<std::pair<std::string, std::string>>{
+           {scratch / "old.csv", scratch / "link.csv"},
+           {scratch / "new.csv", scratch.path.string() + "/./new.csv"},
+           {"-", "/dev/stdout"}}) {
+    const Outcome outcome =
+        i2d("run " + kBox + " --csv " + csv + " --contacts " + contacts, scratch);
+    INFO(csv << " and " << contacts);
+    CHECK(outcome.exitCode == 2);
+    CHECK(outcome.err ==
+          "error: --csv and --contacts both write '" + contacts + "'; give each its own file\n");
+  }
+  CHECK(scratch.entries() == std::vector<std::string>{"link.csv", "old.csv"});
+  const Outcome devices = i2d("run " + kBox + " --csv /dev/null --contacts /dev/null", scratch);
+  CHECK(devices.exitCode == 0);
 }
 
 TEST_CASE("every output option creates the directories its path needs", "[outputs]") {

@@ -13,6 +13,7 @@
 #include "impulse2d/presets.h"
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/scene/setting_ranges.h"
+#include "output_file.h"
 #include "scene_search.h"
 
 namespace i2d {
@@ -381,6 +382,11 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
     throw UsageError(
         "--error-vs-reference writes its own CSV only; leave out --csv, --contacts, --frames, "
         "--trace-step and --plots");
+  }
+  if (options.csvPath && options.contactsPath &&
+      sameOutputFile(*options.csvPath, *options.contactsPath)) {
+    throw UsageError("--csv and --contacts both write '" + *options.contactsPath +
+                     "'; give each its own file");
   }
   if (options.frames.video) requireFrames(options.frames, "--video");
   if ((options.frames.video || options.frames.animation == std::optional<std::string>("mp4")) &&

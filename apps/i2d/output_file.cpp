@@ -33,10 +33,24 @@ bool writesInPlace(const std::string& path, const std::string& target) {
   return !error && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
 }
 
+bool isStandardOutput(const std::string& path) {
+  return path == "-" || path == "/dev/stdout";
+}
+
 }  // namespace
 
+bool sameOutputFile(const std::string& a, const std::string& b) {
+  if (isStandardOutput(a) || isStandardOutput(b)) return isStandardOutput(a) && isStandardOutput(b);
+  std::error_code errorA;
+  std::error_code errorB;
+  const fs::path fileA = fs::weakly_canonical(fs::absolute(a, errorA), errorA);
+  const fs::path fileB = fs::weakly_canonical(fs::absolute(b, errorB), errorB);
+  if (errorA || errorB) return a == b;
+  return fileA == fileB && !writesInPlace(a, fileA.string());
+}
+
 OutputFile::OutputFile(const std::string& path) : target_(followLinks(path)), written_(path) {
-  if (path == "-" || path == "/dev/stdout") {
+  if (isStandardOutput(path)) {
     out_ = &std::cout;
     target_ = written_ = "standard output";
     return;

@@ -37,4 +37,8 @@ class OutputFile {
   bool committed_ = false;
 };
 
+/// Whether two file options would write one file: both standard output ("-", /dev/stdout), or
+/// one regular file by two names (a link, "./"). A device such as /dev/null takes both.
+bool sameOutputFile(const std::string& a, const std::string& b);
+
 }  // namespace i2d
