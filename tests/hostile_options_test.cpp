@@ -51,7 +51,7 @@ TEST_CASE("a failed write leaves no temporary file beside its target", "[outputs
   CHECK(scratch.entries() == std::vector<std::string>{"taken"});
 }
 
-TEST_CASE("--csv and --contacts naming one file by two names are refused before the run",
+TEST_CASE("one file named twice, by --csv and --contacts, is refused before the run",
           "[outputs][errors]") {
   // Each would rename its temporary file over the other's: the second rename failed after the
   // run, leaving the file holding the contacts; two to standard output interleaved their rows.
