@@ -70,7 +70,16 @@ std::string errorOfSetting(const std::string& assignment) {
 
 }  // namespace
 
-TEST_CASE("the issue's example scene loads with every key", "[scene-file][format]") {
+TEST_CASE("a scene is named after its file, never '.' or '..', which name directories",
+          "[scene-file]") {
+  CHECK(parseScene(kOneBall, "demos/ball.toml").name == "ball");
+  CHECK(parseScene(kOneBall, "ball").name == "ball");
+  CHECK(parseScene(kOneBall, "..toml").name == "scene");
+  CHECK(parseScene(kOneBall, "demos/...toml").name == "scene");
+  CHECK(parseScene(kOneBall, ".toml").name == ".toml");
+}
+
+TEST_CASE("the format's example scene loads with every key", "[scene-file][format]") {
   const SceneFile scene = parseScene(kIssueExample, "scenes/example.toml");
   CHECK(scene.name == "example");
   CHECK(scene.world.gravity == Vec2(0.0, -9.81));

@@ -25,9 +25,11 @@ toml::table parseToml(std::string_view text, const std::string& sourceName) {
   }
 }
 
+// The scene's name names its output directories and files, so it may not be "." or ".." (the
+// stems of "..toml" and "...toml"), which would put them beside the directory asked for.
 std::string sceneName(const std::string& sourceName) {
   const std::string stem = std::filesystem::path(sourceName).stem().string();
-  return stem.empty() ? Scene().name : stem;
+  return stem.empty() || stem == "." || stem == ".." ? Scene().name : stem;
 }
 
 bool isBareWord(std::string_view text) {
