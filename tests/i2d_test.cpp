@@ -476,6 +476,41 @@ TEST_CASE("compare --panel runs the scene once per set of changes", "[i2d][compa
   CHECK(badPanel.err.find("no_such_key") != std::string::npos);
 }
 
+TEST_CASE("compare runs panels of other time steps for the same time, frames at equal times",
+          "[i2d][compare]") {
+  // A ball falling freely for 30 steps of 1/60 s, beside the same at 1/240 s. Symplectic Euler
+  // gives v = g t exactly at t = n dt, and y = y0 − g t (t + dt)/2: both panels end with the
+  // kinetic energy ½ m g² t², and their potential energies differ by m g² t (dt₁ − dt₂)/2, so
+  // ΔP / K = (dt₁ − dt₂)/t whatever the mass. Run for 30 steps each, the fine panel stopped at
+  // a quarter of the time.
+  const TemporaryDirectory directory;
+  std::ofstream(directory / "fall.toml") << "[world]\ngravity = [0.0, -9.81]\ndt = 0.0166666667\n"
+                                            "steps = 30\n\n[[body]]\nname = \"ball\"\n"
+                                            "shape = \"circle\"\nradius = 0.5\n"
+                                            "position = [0.0, 10.0]\n";
+  const Outcome outcome =
+      i2d("compare " + (directory / "fall.toml") + " --every 10 --frames " + (directory / "") +
+          " --panel '60 Hz: world.dt=0.0166666667'" + " --panel '240 Hz: world.dt=0.00416666667'");
+  REQUIRE(outcome.exitCode == 0);
+  const auto energies = [&](const std::string& label) {
+    const std::size_t at = outcome.out.find("panel        " + label + ": ");
+    std::pair<long, std::pair<double, double>> figures{-1, {0.0, 0.0}};
+    if (at == std::string::npos) return figures;
+    std::sscanf(outcome.out.c_str() + outcome.out.find(", ", at) + 2,
+                "%ld steps, kinetic %lf J and potential %lf J", &figures.first,
+                &figures.second.first, &figures.second.second);
+    return figures;
+  };
+  const auto [coarseSteps, coarse] = energies("60 Hz");
+  const auto [fineSteps, fine] = energies("240 Hz");
+  CHECK(coarseSteps == 30);
+  CHECK(fineSteps == 120);
+  CHECK(fine.first == Approx(coarse.first).epsilon(1e-5));
+  const double t = 30 * 0.0166666667;
+  CHECK((fine.second - coarse.second) / coarse.first ==
+        Approx((0.0166666667 - 0.00416666667) / t).epsilon(1e-4));
+}
+
 TEST_CASE("compare stops at a reference solve that fails, naming the panel and the step",
           "[i2d][compare][reference]") {
   // One Lemke pivot cannot solve the crate's landing, nor can the active set that Lemke's

@@ -1,5 +1,9 @@
 // `i2d compare`: the same scene run side by side, once per solver or once per set of --set
-// changes, drawn as labelled panels with one camera, every K-th step, and a contact sheet.
+// changes, drawn as labelled panels with one camera, every K-th step, and a contact sheet. The
+// first panel is the clock: every panel runs for its steps × dt, and a panel with another time
+// step takes the steps that time needs, each frame showing it at the step nearest the frame's
+// time.
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -54,6 +58,17 @@ void checkPanelPixels(const SceneFile& file, const CompareOptions& options) {
   if (!refused.empty()) throw impulse2d::SceneError(options.scene.scenePath, refused);
 }
 
+/// A panel whose time step differs from the first panel's runs for the first panel's time: its
+/// steps are that time over its dt (checked against the scene's size limit like any steps).
+void matchFirstPanelTime(const SceneFile& first, SceneFile& scene, const std::string& path) {
+  if (scene.world.dt == first.world.dt) {
+    scene.steps = first.steps;
+    return;
+  }
+  scene.steps = std::lround(double(first.steps) * first.world.dt / scene.world.dt);
+  impulse2d::checkSceneSize(scene, path);
+}
+
 std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
   const SceneFile file = impulse2d::loadSceneFile(options.scene.scenePath);
   checkPanelPixels(file, options);
@@ -62,6 +77,7 @@ std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSet
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {
     PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, nullptr, {}};
+    if (!runs.empty()) matchFirstPanelTime(runs.front().scene, run.scene, options.scene.scenePath);
     run.simulation = impulse2d::makeSimulation(run.scene);
     run.renderer = std::make_unique<FrameRenderer>(camera, run.scene.name, settings);
     runs.push_back(std::move(run));
@@ -69,17 +85,24 @@ std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSet
   return runs;
 }
 
-void stepPanels(std::vector<PanelRun>& runs) {
+void stepPanel(PanelRun& run) {
+  try {
+    run.simulation->step();
+  } catch (const impulse2d::NonFiniteState& failure) {
+    throw RunFailure("panel '" + run.label + "': " + failure.what());
+  } catch (const impulse2d::ReferenceSolveFailure& failure) {
+    throw RunFailure("panel '" + run.label + "' at " +
+                     stepAndTime(run.simulation->stepCount() + 1, run.simulation->settings().dt) +
+                     ": " + failure.what());
+  }
+}
+
+/// Every panel to the step whose time is nearest `time`: the first panel one step, a panel of a
+/// finer time step several, a coarser one none until its next step is nearer.
+void stepPanels(std::vector<PanelRun>& runs, double time) {
   for (PanelRun& run : runs) {
-    try {
-      run.simulation->step();
-    } catch (const impulse2d::NonFiniteState& failure) {
-      throw RunFailure("panel '" + run.label + "': " + failure.what());
-    } catch (const impulse2d::ReferenceSolveFailure& failure) {
-      throw RunFailure("panel '" + run.label + "' at " +
-                       stepAndTime(run.simulation->stepCount() + 1, run.simulation->settings().dt) +
-                       ": " + failure.what());
-    }
+    const double dt = run.simulation->settings().dt;
+    while ((double(run.simulation->stepCount()) + 0.5) * dt <= time) stepPanel(run);
   }
 }
 
@@ -149,7 +172,7 @@ int compareCommand(const CompareOptions& options) {
   std::cout << "scene        " << first.name << " (" << runs.size() << " panels, " << first.steps
             << " steps)\n";
   for (long step = 0; step <= first.steps; ++step) {
-    if (step > 0) stepPanels(runs);
+    if (step > 0) stepPanels(runs, double(step) * first.world.dt);
     measurePanels(runs);
     if (isRecorded(step, first.steps, options.every)) writePanels(runs, writer, settings);
   }

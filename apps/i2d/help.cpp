@@ -148,7 +148,9 @@ const char* const kCompareHelp =
 Runs the scene once per panel, all panels in lockstep, and writes their frames side by side,
 each under a bar with its label, all drawn with one camera:
   DIR/<scene>/<scene>_compare_00000.png, ...   and   DIR/<scene>/<scene>_compare_sheet.png
-then prints each panel's energies at the end.
+then prints each panel's energies at the end. The panels run for the first panel's time; a
+panel with another time step (world.dt) takes the steps that time needs, and each frame shows
+it at the step nearest the frame's time.
 
 panels (one of the two):
   --solvers LIST        one panel per solver, labelled with its name, LIST comma-separated:
