@@ -509,6 +509,13 @@ TEST_CASE("compare runs panels of other time steps for the same time, frames at 
   const double t = 30 * 0.0166666667;
   CHECK((fine.second - coarse.second) / coarse.first ==
         Approx((0.0166666667 - 0.00416666667) / t).epsilon(1e-4));
+
+  // The fine panel's steps are held to the size limit of any run: 600 steps of 1/60 s at 1 µs.
+  const Outcome tooFine = i2d("compare " + kScenes + "pyramid.toml --frames " + (directory / "") +
+                              " --panel 'a: world.dt=0.0166666667' --panel 'b: world.dt=1e-6'");
+  CHECK(tooFine.exitCode == 3);
+  CHECK(tooFine.err.find("panel 'b' takes 10000000 steps of its dt for the first panel's time") !=
+        std::string::npos);
 }
 
 TEST_CASE("compare stops at a reference solve that fails, naming the panel and the step",

@@ -59,14 +59,21 @@ void checkPanelPixels(const SceneFile& file, const CompareOptions& options) {
 }
 
 /// A panel whose time step differs from the first panel's runs for the first panel's time: its
-/// steps are that time over its dt (checked against the scene's size limit like any steps).
-void matchFirstPanelTime(const SceneFile& first, SceneFile& scene, const std::string& path) {
+/// steps are that time over its dt, checked against the scene's size limit like any steps.
+void matchFirstPanelTime(const SceneFile& first, const std::string& label, SceneFile& scene,
+                         const std::string& path) {
   if (scene.world.dt == first.world.dt) {
     scene.steps = first.steps;
     return;
   }
   scene.steps = std::lround(double(first.steps) * first.world.dt / scene.world.dt);
-  impulse2d::checkSceneSize(scene, path);
+  try {
+    impulse2d::checkSceneSize(scene, path);
+  } catch (const impulse2d::SceneError& error) {
+    throw impulse2d::SceneError(
+        path, "panel '" + label + "' takes " + std::to_string(scene.steps) +
+                  " steps of its dt for the first panel's time: " + error.message());
+  }
 }
 
 std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
@@ -77,7 +84,9 @@ std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSet
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {
     PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, nullptr, {}};
-    if (!runs.empty()) matchFirstPanelTime(runs.front().scene, run.scene, options.scene.scenePath);
+    if (!runs.empty()) {
+      matchFirstPanelTime(runs.front().scene, run.label, run.scene, options.scene.scenePath);
+    }
     run.simulation = impulse2d::makeSimulation(run.scene);
     run.renderer = std::make_unique<FrameRenderer>(camera, run.scene.name, settings);
     runs.push_back(std::move(run));
