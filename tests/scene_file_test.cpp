@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "impulse2d/scene/scene_file.h"
@@ -361,4 +363,21 @@ TEST_CASE("each kind of bad input is one error at its place", "[scene-file][erro
 TEST_CASE("a file that cannot be read is a SceneError naming it", "[scene-file][errors]") {
   CHECK_THROWS_WITH(loadSceneFile("/nonexistent/scene.toml"),
                     "/nonexistent/scene.toml: cannot read the file: No such file or directory");
+}
+
+TEST_CASE("a scene file beyond 16 MiB is refused, even one that never ends",
+          "[scene-file][errors]") {
+  // /dev/zero was read until memory ran out (std::bad_alloc after gigabytes).
+  CHECK_THROWS_WITH(loadSceneFile("/dev/zero"),
+                    "/dev/zero: is larger than 16 MiB, the most a scene file may hold");
+  const std::filesystem::path padded =
+      std::filesystem::temp_directory_path() / "scene_file_test_padded.toml";
+  {
+    std::ofstream out(padded);
+    out << kOneBall << std::string(kLargestSceneFileBytes - std::string(kOneBall).size(), '\n');
+  }
+  CHECK(loadSceneFile(padded.string()).bodies.size() == 1);  // at the limit: read whole
+  std::ofstream(padded, std::ios::app) << '\n';
+  CHECK_THROWS_WITH(loadSceneFile(padded.string()), Catch::Contains("is larger than 16 MiB"));
+  std::filesystem::remove(padded);
 }

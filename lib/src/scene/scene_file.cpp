@@ -83,9 +83,15 @@ SceneFile loadSceneFile(const std::string& path) {
   if (std::filesystem::is_directory(path)) throw SceneError(path, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, "cannot read the file: " + std::string(std::strerror(errno)));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseScene(text.str(), path);
+  // Read to one byte past the limit: a device such as /dev/zero never ends.
+  std::string text(kLargestSceneFileBytes + 1, '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(std::size_t(in.gcount()));
+  if (text.size() > kLargestSceneFileBytes) {
+    throw SceneError(path, "is larger than " + std::to_string(kLargestSceneFileBytes >> 20) +
+                               " MiB, the most a scene file may hold");
+  }
+  return parseScene(text, path);
 }
 
 SceneFile parseScene(std::string_view text, const std::string& sourceName) {

@@ -6,6 +6,7 @@
 // everything built from it, the CSV of `i2d run` included) holds the centre of mass.
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -46,7 +47,12 @@ class SceneError : public std::runtime_error {
   std::string message_;
 };
 
-/// Reads and parses the scene file at `path`; the scene is named after the file's stem.
+/// The most a scene file may hold: far beyond any scene a run may take (the size limit on steps ×
+/// bodies), and a bound on what reading a device such as /dev/zero would allocate.
+constexpr std::size_t kLargestSceneFileBytes = std::size_t(16) << 20;
+
+/// Reads and parses the scene file at `path`; the scene is named after the file's stem. A file
+/// larger than kLargestSceneFileBytes is refused.
 SceneFile loadSceneFile(const std::string& path);
 
 /// Parses scene text; `sourceName` names it in errors and gives the scene its name (its stem).
