@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -223,4 +224,32 @@ TEST_CASE("i2d's own output on a full disk is one error line and exit code 1", "
     CHECK(WEXITSTATUS(status) == 1);
     CHECK(text.str() == "error: cannot write standard output: " + kNoSpace + "\n");
   }
+}
+
+TEST_CASE("an interrupted run removes its temporary CSV and ends as the signal says",
+          "[disk][csv]") {
+  // Ctrl-C during a long run left rain.csv.tmp, as large as the rows so far.
+  const TemporaryDirectory directory;
+  const std::string csv = directory / "rain.csv";
+  const std::string scene = kScenes + "rain.toml";
+  const pid_t child = fork();
+  if (child == 0) {
+    std::signal(SIGINT, SIG_DFL);  // as at a terminal, whatever the test's caller ignores
+    const int quiet = open("/dev/null", O_WRONLY);
+    dup2(quiet, 1);
+    dup2(quiet, 2);
+    execl(kBinary.c_str(), "i2d", "run", scene.c_str(), "--steps", "20000", "--every", "1000",
+          "--csv", csv.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // The file is open before the first step; 20,000 steps of the rain take many seconds.
+  for (int tries = 0; tries < 500 && !fs::exists(csv + ".tmp"); ++tries) usleep(20000);
+  const bool opened = fs::exists(csv + ".tmp");
+  kill(child, SIGINT);
+  int status = 0;
+  waitpid(child, &status, 0);
+  REQUIRE(opened);
+  CHECK(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGINT);
+  CHECK(fs::is_empty(directory.path()));
 }

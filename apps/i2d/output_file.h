@@ -13,7 +13,8 @@ namespace i2d {
 /// followed, so the file it names is replaced and the link stays. "-" and /dev/stdout are i2d's
 /// standard output. Any other device (/dev/null, /dev/fd/3), a named pipe or a socket is written
 /// in place: renaming over it would replace the device with a file. A directory is refused when
-/// the file is opened.
+/// the file is opened. An interrupt (Ctrl-C, SIGTERM, SIGHUP) while PATH.tmp is open removes it
+/// before i2d ends as the signal says.
 class OutputFile {
  public:
   /// Opens the file, or PATH.tmp; throws RunFailure naming the path when it cannot.
@@ -35,6 +36,7 @@ class OutputFile {
   std::ofstream file_;
   std::ostream* out_ = &file_;
   bool committed_ = false;
+  int interruptSlot_ = -1;  ///< where an interrupt finds written_ to remove it; -1: none
 };
 
 /// Whether two file options would write one file: both standard output ("-", /dev/stdout), or
