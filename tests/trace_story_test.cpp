@@ -130,6 +130,11 @@ TEST_CASE("a traced soft step shows its bounce leaving at -e times the closing s
   const double e = 0.5;
   CHECK(closing == Approx(0.0).margin(1e-3));
   CHECK(after == Approx(-e * speedBefore).margin(1e-3));
+  // The substeps' relax sweeps are traced too: the last leaves the ball at rest on the ground.
+  std::unique_ptr<World> relaxed = buildWorld(scene);
+  const auto [relaxClosing, relaxAfter] =
+      firstClosingSpeeds(*relaxed, step, "trace_story_relax", "relax 3: contact");
+  CHECK(relaxAfter == Approx(0.0).margin(1e-3));
   // Watching changes nothing: the traced step ends where an untraced one does, to the bit.
   std::unique_ptr<World> untraced = buildWorld(scene);
   while (untraced->stepCount() < traced->stepCount()) untraced->step();
@@ -146,6 +151,9 @@ TEST_CASE("a trace names soft step's substeps, and prints round-off below its di
         "substep 2: contact 0.1");
   CHECK(tellEvent(event, none, none, noManifolds, "sequential", 0.01).label ==
         "velocity 2: contact 0.1");
+  event.phase = SolverEvent::Phase::Relax;
+  CHECK(tellEvent(event, none, none, noManifolds, "soft_step", 0.01).label ==
+        "relax 2: contact 0.1");
   event.phase = SolverEvent::Phase::Restitution;
   CHECK(tellEvent(event, none, none, noManifolds, "soft_step", 0.01).label ==
         "restitution: contact 0.1");

@@ -16,23 +16,24 @@ namespace impulse2d {
 /// One thing a solver did to one contact point, reported to an observer as it happens, so a
 /// student can watch a step iteration by iteration (`i2d run --trace-step`).
 struct SolverEvent {
-  /// Which pass of the step the event belongs to: the velocity sweeps, the position pass, or soft
-  /// step's restitution pass after its substeps, which gives a closing contact its bounce.
-  enum class Phase { Velocity, Position, Restitution };
-  /// velocity, position or restitution pass
+  /// Which pass of the step the event belongs to: the velocity sweeps, the position pass, a relax
+  /// sweep (the velocities solved again without the push-out bias, after the positions moved) or
+  /// a restitution pass after the sweeps, which gives a closing contact its bounce.
+  enum class Phase { Velocity, Position, Relax, Restitution };
+  /// velocity, position, relax or restitution pass
   Phase phase = Phase::Velocity;
   /// 0-based: the micro-collision resolver counts its impulses (or moves) in this step,
-  /// sequential impulses count their sweeps.
+  /// sequential impulses count their sweeps, a method of substeps its substeps.
   int iteration = 0;
   int manifold = -1;  ///< index into the step's manifolds
   int point = -1;     ///< 0 or 1
-  /// Velocity and restitution phases: the velocity change the solver wanted at the point along
-  /// the normal (m/s). Position phase: the penetration it removed (m).
+  /// Velocity, relax and restitution phases: the velocity change the solver wanted at the point
+  /// along the normal (m/s). Position phase: the penetration it removed (m).
   double desiredChange = 0.0;
   double normalImpulse = 0.0;   ///< N s applied by this event along the normal
   double tangentImpulse = 0.0;  ///< N s applied by this event along the tangent
 
-  /// True for an impulse (velocity and restitution phases), false for a move of the positions.
+  /// True for an impulse (every phase but the position pass), false for a move of the positions.
   bool changesVelocity() const { return phase != Phase::Position; }
 };
 
@@ -44,8 +45,8 @@ class SolverObserver {
   virtual void onSolverEvent(const SolverEvent& event, const std::vector<Body>& bodies,
                              const std::vector<Manifold>& manifolds) = 0;
   /// Called when the velocities changed outside any event: the world (or a substep) integrated
-  /// the forces, before the method's first impulse, or a pass that reports no events ended (soft
-  /// step's relax sweeps). The bodies as the next event starts from them.
+  /// the forces, before the method's first impulse. The bodies as the next event starts from
+  /// them.
   virtual void onVelocitiesChanged(const std::vector<Body>&) {}
 };
 

@@ -61,17 +61,19 @@ std::string frictionLine(const Manifold& manifold, const ContactPoint& point) {
                 limit, manifold.friction);
 }
 
-/// "velocity 3: contact 5.0": the pass, its count (sweep, impulse, move, or soft step's substep)
-/// and the point. Soft step bounces after its substeps: "restitution: contact 5.0".
+/// "velocity 3: contact 5.0": the pass, its count (sweep, impulse, move, or soft step's substep,
+/// whose relax sweep is "relax 3") and the point. Soft step bounces after its substeps:
+/// "restitution: contact 5.0".
 std::string eventLabel(const SolverEvent& event, const std::string& solver) {
   char label[96];
   if (event.phase == SolverEvent::Phase::Restitution) {
     std::snprintf(label, sizeof label, "restitution: contact %d.%d", event.manifold, event.point);
     return label;
   }
-  const char* pass = !event.changesVelocity() ? "position"
-                     : solver == "soft_step"  ? "substep"
-                                              : "velocity";
+  const char* pass = !event.changesVelocity()                   ? "position"
+                     : event.phase == SolverEvent::Phase::Relax ? "relax"
+                     : solver == "soft_step"                    ? "substep"
+                                                                : "velocity";
   std::snprintf(label, sizeof label, "%s %d: contact %d.%d", pass, event.iteration, event.manifold,
                 event.point);
   return label;

@@ -340,20 +340,21 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
       const double change = constraint.points[i].normalImpulse - before[i].normal;
       largestChange = std::max(largestChange, std::abs(change));
     }
-    if (context.observer && useBias) reportPoints(context, constraint, before, substep);
+    if (context.observer) reportPoints(context, constraint, before, substep, useBias);
   }
   return largestChange;
 }
 
 // A traced sweep tells one event per point of the manifold just solved: the impulses it changed
 // by, the velocity change its normal row wanted before clamping (λ/m), and the bodies after the
-// manifold's solve as far as the substeps have moved them.
+// manifold's solve as far as the substeps have moved them. The relax sweep's are its own phase.
 void SoftStepSolver::reportPoints(const StepContext& context, const Constraint& constraint,
-                                  const std::array<PointImpulses, 2>& before, int substep) {
+                                  const std::array<PointImpulses, 2>& before, int substep,
+                                  bool useBias) {
   moveTracedBodies(context);
   for (int i = 0; i < constraint.pointCount; ++i) {
     const ConstraintPoint& cp = constraint.points[i];
-    const SolverEvent event{SolverEvent::Phase::Velocity,
+    const SolverEvent event{useBias ? SolverEvent::Phase::Velocity : SolverEvent::Phase::Relax,
                             substep,
                             constraint.manifold,
                             i,
@@ -365,7 +366,7 @@ void SoftStepSolver::reportPoints(const StepContext& context, const Constraint& 
 }
 
 // The velocities the next traced event starts from: a substep's after its gravity and loads, or
-// the last relax sweep's before the restitution pass.
+// the substeps' last before the restitution pass.
 void SoftStepSolver::reportVelocitiesChanged(const StepContext& context) {
   moveTracedBodies(context);
   context.observer->onVelocitiesChanged(tracedBodies_);

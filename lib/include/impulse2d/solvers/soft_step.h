@@ -130,7 +130,7 @@ class SoftStepSolver : public ContactSolver {
   void warmStart();
   double solve(const StepContext& context, bool useBias, int substep);
   void reportPoints(const StepContext& context, const Constraint& constraint,
-                    const std::array<PointImpulses, 2>& before, int substep);
+                    const std::array<PointImpulses, 2>& before, int substep, bool useBias);
   void reportVelocitiesChanged(const StepContext& context);
   void moveTracedBodies(const StepContext& context);
   static void moveBody(const SubstepBody& moved, Body& body);
