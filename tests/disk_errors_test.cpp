@@ -13,60 +13,27 @@
 
 #include <algorithm>
 #include <csignal>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "i2d_process.h"
 #include "impulse2d/render/frame_writer.h"
 #include "impulse2d/render/png.h"
 
 namespace fs = std::filesystem;
+using namespace i2d_process;
 using namespace impulse2d::render;
 using impulse2d::Vec2;
 
 namespace {
 
-const std::string kBinary = IMPULSE2D_BINARY_DIR "/apps/i2d";
-const std::string kScenes = IMPULSE2D_SOURCE_DIR "/demos/scenes/";
 const std::string kFullDisk = "/dev/full";
 const std::string kNoSpace = "No space left on device";
-
-/// A fresh directory under /tmp, removed with everything in it at the end of the test.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    std::string pattern = (fs::temp_directory_path() / "disk_errors_test.XXXXXX").string();
-    path_ = mkdtemp(pattern.data());
-  }
-  ~TemporaryDirectory() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
 
 /// Makes writing to `path` fail as on a full disk.
 void onFullDisk(const fs::path& path) {
   fs::create_symlink(kFullDisk, path);
-}
-
-struct Outcome {
-  int exitCode = -1;
-  std::string err;
-};
-
-Outcome i2d(const std::string& arguments, const TemporaryDirectory& directory) {
-  const std::string err = directory / "stderr";
-  const int status = std::system((kBinary + " " + arguments + " >/dev/null 2>" + err).c_str());
-  std::ifstream in(err);
-  std::ostringstream text;
-  text << in.rdbuf();
-  fs::remove(err);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
 }
 
 Image greyImage() {
@@ -87,7 +54,7 @@ TEST_CASE("a CSV on a full disk is one error line, exit code 1, and no file", "[
   // One step fits in the stream's buffer, so the error shows when the file is closed; the whole
   // run does not, so it shows while rows are written.
   for (const std::string steps : {"1", "360"}) {
-    const TemporaryDirectory directory;
+    const Scratch directory;
     const std::string csv = directory / "ball.csv";
     onFullDisk(csv + ".tmp");
     const Outcome outcome =
@@ -95,23 +62,23 @@ TEST_CASE("a CSV on a full disk is one error line, exit code 1, and no file", "[
     INFO(steps << " steps");
     CHECK(outcome.exitCode == 1);
     CHECK(outcome.err == "error: cannot write " + csv + ".tmp: " + kNoSpace + "\n");
-    CHECK(fs::is_empty(directory.path()));
+    CHECK(fs::is_empty(directory.path));
   }
 }
 
 TEST_CASE("a PNG on a full disk throws naming the cause and leaves no file", "[disk][png]") {
   REQUIRE(fs::exists(kFullDisk));
-  const TemporaryDirectory directory;
+  const Scratch directory;
   const fs::path png = directory / "frame.png";
   onFullDisk(directory / "frame.png.tmp");
   CHECK_THROWS_WITH(writePng(png, greyImage()), Catch::Contains(kNoSpace));
-  CHECK(fs::is_empty(directory.path()));
+  CHECK(fs::is_empty(directory.path));
 }
 
 TEST_CASE("a frame on a full disk is not counted and leaves no file", "[disk][frames]") {
   REQUIRE(fs::exists(kFullDisk));
-  const TemporaryDirectory directory;
-  FrameWriter frames(directory.path(), "scene");
+  const Scratch directory;
+  FrameWriter frames(directory.path, "scene");
   onFullDisk(frames.framePath(0).string() + ".tmp");
   CHECK_THROWS_WITH(frames.write(0, greyFrame()), Catch::Contains(kNoSpace));
   CHECK(frames.frameCount() == 0);
@@ -121,12 +88,12 @@ TEST_CASE("a frame on a full disk is not counted and leaves no file", "[disk][fr
 TEST_CASE("i2d run --frames on a full disk is one error line, exit code 1, and no sheet",
           "[disk][frames]") {
   REQUIRE(fs::exists(kFullDisk));
-  const TemporaryDirectory directory;
-  const fs::path scene = directory.path() / "bouncing_ball";
+  const Scratch directory;
+  const fs::path scene = directory.path / "bouncing_ball";
   fs::create_directory(scene);
   onFullDisk(scene / "bouncing_ball_sheet.png.tmp");
   const Outcome outcome =
-      i2d("run " + kScenes + "bouncing_ball.toml --steps 2 --frames " + directory.path().string(),
+      i2d("run " + kScenes + "bouncing_ball.toml --steps 2 --frames " + directory.path.string(),
           directory);
   CHECK(outcome.exitCode == 1);
   CHECK(outcome.err == "error: cannot write image '" +
@@ -140,7 +107,7 @@ TEST_CASE("a CSV through a link to a full device is the device's error, and the 
           "[disk][csv]") {
   // Written in place, as a device must be: a rename over the link would hide the full disk.
   REQUIRE(fs::exists(kFullDisk));
-  const TemporaryDirectory directory;
+  const Scratch directory;
   const std::string csv = directory / "ball.csv";
   fs::create_symlink(kFullDisk, csv);
   const Outcome outcome =
@@ -153,7 +120,7 @@ TEST_CASE("a CSV through a link to a full device is the device's error, and the 
 
 TEST_CASE("a CSV written to a named pipe reaches its reader, and the pipe stays a pipe",
           "[disk][csv]") {
-  const TemporaryDirectory directory;
+  const Scratch directory;
   const std::string pipe = directory / "ball.pipe";
   REQUIRE(mkfifo(pipe.c_str(), 0600) == 0);
   // Opened first without blocking, so i2d's open finds a reader; one step of rows fits in the
@@ -169,67 +136,52 @@ TEST_CASE("a CSV written to a named pipe reaches its reader, and the pipe stays 
   CHECK(outcome.exitCode == 0);
   CHECK(fs::is_fifo(pipe));
   CHECK(received.rfind("step,t,body,", 0) == 0);
-  CHECK(std::count(received.begin(), received.end(), '\n') == 3);
+  CHECK(lineCount(received) == 3);  // the header, then steps 0 and 1 of the one ball
 }
 
 TEST_CASE("a CSV through a link replaces the file it names, and the link stays", "[disk][csv]") {
-  const TemporaryDirectory directory;
+  const Scratch directory;
   const std::string file = directory / "ball.csv";
   const std::string link = directory / "latest.csv";
-  std::ofstream(file) << "an older run\n";
+  writeFile(file, "an older run\n");
   fs::create_symlink(file, link);
   const Outcome outcome =
       i2d("run " + kScenes + "bouncing_ball.toml --steps 1 --csv " + link, directory);
-  std::ifstream in(file);
-  std::string header;
-  std::getline(in, header);
   CHECK(outcome.exitCode == 0);
   CHECK(fs::is_symlink(link));
-  CHECK(header.rfind("step,t,body,", 0) == 0);
+  CHECK(readFile(file).rfind("step,t,body,", 0) == 0);
 }
 
 TEST_CASE("a CSV to standard output comes before the summary", "[disk][csv]") {
-  const TemporaryDirectory directory;
+  const Scratch directory;
   for (const std::string name : {"-", "/dev/stdout"}) {
-    const std::string out = directory / "out.txt";
-    const int status = std::system(
-        (kBinary + " run " + kScenes + "bouncing_ball.toml --steps 1 --csv " + name + " >" + out)
-            .c_str());
-    std::ifstream in(out);
-    std::ostringstream text;
-    text << in.rdbuf();
-    INFO("--csv " << name << ":\n" << text.str());
-    CHECK(WIFEXITED(status));
-    CHECK(WEXITSTATUS(status) == 0);
-    CHECK(text.str().rfind("step,t,body,x,y,angle_rad,vx,vy,omega_rad_s\n0,0,ball,", 0) == 0);
-    CHECK(text.str().find("\nscene        bouncing_ball") != std::string::npos);
+    const Outcome outcome =
+        i2d("run " + kScenes + "bouncing_ball.toml --steps 1 --csv " + name, directory);
+    INFO("--csv " << name << ":\n" << outcome.out);
+    CHECK(outcome.exitCode == 0);
+    CHECK(outcome.out.rfind("step,t,body,x,y,angle_rad,vx,vy,omega_rad_s\n0,0,ball,", 0) == 0);
+    CHECK(outcome.out.find("\nscene        bouncing_ball") != std::string::npos);
   }
   CHECK(fs::is_symlink("/dev/stdout"));
 }
 
 TEST_CASE("i2d's own output on a full disk is one error line and exit code 1", "[disk]") {
   REQUIRE(fs::exists(kFullDisk));
-  const TemporaryDirectory directory;
-  const std::string err = directory / "stderr";
+  const Scratch directory;
   for (const std::string& command :
        std::vector<std::string>{"check " + kScenes + "stack.toml", "presets", "--help",
                                 "run " + kScenes + "bouncing_ball.toml --steps 2"}) {
-    const int status =
-        std::system((kBinary + " " + command + " >" + kFullDisk + " 2>" + err).c_str());
-    std::ifstream in(err);
-    std::ostringstream text;
-    text << in.rdbuf();
+    const Outcome outcome = i2d(command, directory, kFullDisk);
     INFO("i2d " << command);
-    CHECK(WIFEXITED(status));
-    CHECK(WEXITSTATUS(status) == 1);
-    CHECK(text.str() == "error: cannot write standard output: " + kNoSpace + "\n");
+    CHECK(outcome.exitCode == 1);
+    CHECK(outcome.err == "error: cannot write standard output: " + kNoSpace + "\n");
   }
 }
 
 TEST_CASE("an interrupted run removes its temporary CSV and ends as the signal says",
           "[disk][csv]") {
   // Ctrl-C during a long run left rain.csv.tmp, as large as the rows so far.
-  const TemporaryDirectory directory;
+  const Scratch directory;
   const std::string csv = directory / "rain.csv";
   const std::string scene = kScenes + "rain.toml";
   const pid_t child = fork();
@@ -251,5 +203,5 @@ TEST_CASE("an interrupted run removes its temporary CSV and ends as the signal s
   REQUIRE(opened);
   CHECK(WIFSIGNALED(status));
   CHECK(WTERMSIG(status) == SIGINT);
-  CHECK(fs::is_empty(directory.path()));
+  CHECK(fs::is_empty(directory.path));
 }

@@ -53,13 +53,17 @@ struct Outcome {
   std::string err;
 };
 
-/// Runs i2d with the arguments (a shell word list); its streams go to files in `scratch`.
-inline Outcome i2d(const std::string& arguments, const Scratch& scratch) {
-  const std::string command = kBinary + " " + arguments + " >" + (scratch / "stdout.txt") + " 2>" +
-                              (scratch / "stderr.txt");
+/// Runs i2d with the arguments (a shell word list); its streams go to files in `scratch`, or its
+/// standard output to `standardOutput` when one is named (/dev/full), leaving `out` empty.
+inline Outcome i2d(const std::string& arguments, const Scratch& scratch,
+                   const std::string& standardOutput = "") {
+  const std::string out = standardOutput.empty() ? scratch / "stdout.txt" : standardOutput;
+  const std::string command =
+      kBinary + " " + arguments + " >" + out + " 2>" + (scratch / "stderr.txt");
   const int status = std::system(command.c_str());
   const Outcome outcome{WIFEXITED(status) ? WEXITSTATUS(status) : -1,
-                        readFile(scratch / "stdout.txt"), readFile(scratch / "stderr.txt")};
+                        standardOutput.empty() ? readFile(out) : "",
+                        readFile(scratch / "stderr.txt")};
   std::filesystem::remove(scratch / "stdout.txt");
   std::filesystem::remove(scratch / "stderr.txt");
   return outcome;
