@@ -351,7 +351,7 @@ double SoftStepSolver::solve(const StepContext& context, bool useBias, int subst
 void SoftStepSolver::reportPoints(const StepContext& context, const Constraint& constraint,
                                   const std::array<PointImpulses, 2>& before, int substep,
                                   bool useBias) {
-  moveTracedBodies(context);
+  updateTracedState(context);
   for (int i = 0; i < constraint.pointCount; ++i) {
     const ConstraintPoint& cp = constraint.points[i];
     const SolverEvent event{useBias ? SolverEvent::Phase::Velocity : SolverEvent::Phase::Relax,
@@ -368,13 +368,13 @@ void SoftStepSolver::reportPoints(const StepContext& context, const Constraint& 
 // The velocities the next traced event starts from: a substep's after its gravity and loads, or
 // the substeps' last before the restitution pass.
 void SoftStepSolver::reportVelocitiesChanged(const StepContext& context) {
-  moveTracedBodies(context);
+  updateTracedState(context);
   context.observer->onVelocitiesChanged(tracedBodies_);
 }
 
 // The world's bodies move when the step ends (finishBodies); a trace sees copies moved now, and
 // the manifolds' impulses as they stand.
-void SoftStepSolver::moveTracedBodies(const StepContext& context) {
+void SoftStepSolver::updateTracedState(const StepContext& context) {
   writeTotals(context);
   tracedBodies_ = context.bodies;
   for (int i = 0; i < static_cast<int>(tracedBodies_.size()); ++i) {
@@ -503,7 +503,7 @@ SoftStepSolver::BounceStart SoftStepSolver::bounceStart(const Constraint& constr
 // friction solved with it) added to the step's impulses, and the bodies after it.
 void SoftStepSolver::reportBounce(const StepContext& context, const Constraint& constraint,
                                   const BounceStart& start) {
-  moveTracedBodies(context);
+  updateTracedState(context);
   for (int i = 0; i < constraint.pointCount; ++i) {
     const ConstraintPoint& cp = constraint.points[i];
     if (!bounces(cp)) continue;

@@ -132,7 +132,7 @@ class SoftStepSolver : public ContactSolver {
   void reportPoints(const StepContext& context, const Constraint& constraint,
                     const std::array<PointImpulses, 2>& before, int substep, bool useBias);
   void reportVelocitiesChanged(const StepContext& context);
-  void moveTracedBodies(const StepContext& context);
+  void updateTracedState(const StepContext& context);
   static void moveBody(const SubstepBody& moved, Body& body);
   void solveNormals(Constraint& constraint, SubstepBody& a, SubstepBody& b, bool useBias);
   NormalRow normalRow(const Constraint& constraint, const ConstraintPoint& cp, const SubstepBody& a,
