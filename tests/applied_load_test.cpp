@@ -65,7 +65,7 @@ TEST_CASE("pushed_box.toml reads its ramping push", "[load]") {
 
 TEST_CASE("a ramping push starts the box sliding within one step of F = mu m g", "[load]") {
   const double analytic = analyticSlidingStep(pushedBox("sequential"));
-  CHECK(analytic == Approx(148.15).margin(0.01));
+  REQUIRE(analytic == Approx(148.15).margin(0.01));
   for (const std::string solver : {"micro", "sequential", "reference", "box2d"}) {
     const SceneFile scene = pushedBox(solver);
     const std::unique_ptr<Simulation> simulation = makeSimulation(scene);

@@ -363,7 +363,7 @@ TEST_CASE(
 // 0.5 m/s at 240 Hz, stopped the run in step 19 with every path at 1.2e-9 to 3.7e-9. Such an
 // island now goes to the active set, as a large island goes to Lemke, and every step is answered
 // within the tolerance.
-TEST_CASE("a small island that Lemke cannot finish goes to the active set",
+TEST_CASE("a small island that Lemke cannot finish is answered within the tolerance every step",
           "[reference][failure]") {
   constexpr double kRadius = 0.1;
   Scene scene = lecture::sceneWith("reference", 1.0 / 240.0);

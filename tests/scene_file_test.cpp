@@ -3,6 +3,8 @@
 // located error message (docs/scene-format.md).
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -371,7 +373,8 @@ TEST_CASE("a scene file beyond 16 MiB is refused, even one that never ends",
   CHECK_THROWS_WITH(loadSceneFile("/dev/zero"),
                     "/dev/zero: is larger than 16 MiB, the most a scene file may hold");
   const std::filesystem::path padded =
-      std::filesystem::temp_directory_path() / "scene_file_test_padded.toml";
+      std::filesystem::temp_directory_path() /
+      ("scene_file_test_padded_" + std::to_string(getpid()) + ".toml");  // one per process
   {
     std::ofstream out(padded);
     out << kOneBall << std::string(kLargestSceneFileBytes - std::string(kOneBall).size(), '\n');

@@ -184,8 +184,9 @@ TEST_CASE("an observer sees one event per point per sweep", "[sequential][trace]
   CHECK(observer.lastSweep == sweeps - 1);
 }
 
-TEST_CASE("the sweeps stop once converged: a settled stack takes few, with the forces of all 20",
-          "[sequential][converged]") {
+TEST_CASE(
+    "the sweeps stop once converged: a settled stack takes few, with the forces of the full count",
+    "[sequential][converged]") {
   constexpr int kBoxes = 10;
   const int allSweeps = SequentialImpulseSettings{}.velocityIterations;
   Scene scene = stackScene("sequential", kBoxes, 0.6);
