@@ -503,3 +503,51 @@ TEST_CASE("stack and pyramid: the energies at the end, each method", "[docs][sta
   checkFigure(page, "490.49 J, {1888.43} →", totalEnergy(*runFor(pyramid, 0)));
   checkFigure(page, "1888.43 → {1888.40} J", totalEnergy(*runFor(pyramid, 300)));
 }
+
+TEST_CASE("incline and seesaw: the accelerations the pages derive, from the runs",
+          "[docs][friction]") {
+  // The lower box on incline_friction slides from rest: its speed after the 3 s over 3 s.
+  const SceneFile incline = demoScene("incline_friction.toml");
+  const std::unique_ptr<World> slid = runFor(incline, incline.steps);
+  double fastest = 0.0;
+  for (const Body& body : slid->bodies()) fastest = std::max(fastest, body.velocity.norm());
+  const double slide = fastest / (incline.steps * incline.world.dt);
+  checkFigure(readPage("docs/demos.md"), "g(sin θ − μ cos θ) = {1.73} m/s²", slide);
+  checkFigure(readPage("demos/scenes/incline_friction.toml"), "* 0.866) = {1.73} m/s^2", slide);
+  // The tipping seesaw from rest: its turning rate after a tenth of a second over that time.
+  const SceneFile seesaw = demoScene("seesaw.toml");
+  const long steps = 6;
+  const std::unique_ptr<World> turning = runFor(seesaw, steps);
+  const double alpha =
+      std::abs(bodyNamed(*turning, "plank_tips").angularVelocity) / (steps * seesaw.world.dt);
+  checkFigure(readPage("docs/demos.md"), "Σ m g d / I = {0.56} rad/s²", alpha, 0.01);
+  checkFigure(readPage("demos/scenes/seesaw.toml"), "(alpha = {0.56} rad/s^2)", alpha, 0.01);
+  // "lands its end on the ground after about 1.4 s": the plank's turn stops then.
+  std::unique_ptr<World> world = buildWorld(seesaw);
+  double landed = 0.0;
+  double fastestTurn = 0.0;
+  while (world->stepCount() < seesaw.steps && landed == 0.0) {
+    world->step();
+    const double turn = std::abs(bodyNamed(*world, "plank_tips").angularVelocity);
+    fastestTurn = std::max(fastestTurn, turn);
+    if (turn < 0.5 * fastestTurn) landed = world->stepCount() * seesaw.world.dt;
+  }
+  checkFigure(readPage("docs/demos.md"), "end on the ground after about {1.2} s", landed, 0.1);
+}
+
+TEST_CASE("tipping: the tall box on 16° lands on its side", "[docs][friction]") {
+  // Landed: the first step its turn, fast while it falls, is stopped by the ramp.
+  const SceneFile scene = demoScene("tipping.toml");
+  std::unique_ptr<World> world = buildWorld(scene);
+  double fastestTurn = 0.0;
+  long landed = 0;
+  while (world->stepCount() < scene.steps && landed == 0) {
+    world->step();
+    const double turn = std::abs(bodyNamed(*world, "tips").angularVelocity);
+    fastestTurn = std::max(fastestTurn, turn);
+    if (turn < 0.25 * fastestTurn) landed = world->stepCount();
+  }
+  const Page page = readPage("docs/demos.md");
+  checkFigure(page, "lands on its side by step {105}", double(landed), 5.0);
+  checkFigure(page, "(t = {1.75} s, a short slide", landed * scene.world.dt, 0.05);
+}
