@@ -223,6 +223,27 @@ TEST_CASE("the PNG and the SVG of one frame agree", "[frame][svg][png]") {
   CHECK(png.at(int(centre.x()), int(centre.y())) == resting);
 }
 
+TEST_CASE("a ball drawn after the boxes shows its state's colour, as in i2d", "[frame][png]") {
+  // The library's example adds its ball after a stack; i2d's scene lists it first. Where a body
+  // comes in the list must not change its colour: the ball, resting like the box, is green.
+  const fs::path directory = test::scratchDirectory("ball_last");
+  test::FixedSimulation simulation = test::boxOnGround();
+  simulation.bodyList.push_back(
+      makeBody("ball", BodyType::Dynamic, makeCircle(0.5), 1.0, Vec2(-2.0, 0.5), 0.0));
+  Manifold manifold = simulation.manifoldList[0];
+  manifold.bodyB = 2;
+  manifold.pointCount = 1;
+  manifold.points[0].point = Vec2(-2.0, 0.0);
+  simulation.manifoldList.push_back(manifold);
+  RenderSettings settings;
+  FrameRenderer renderer(fitCamera(simulation.bodies(), ViewDef{}, settings), "ball", settings);
+  writePicture(directory / "frame.png", renderer.draw(simulation).picture, ImageFormat::Png);
+  const Image png = readPng(directory / "frame.png");
+  const Vec2 insideBall =
+      renderer.camera().toPixels(Vec2(-2.0, 0.75)) + Vec2(0.0, renderer.camera().headsUpHeight);
+  CHECK(png.at(int(insideBall.x()), int(insideBall.y())) == settings.colours.restingBody);
+}
+
 TEST_CASE("a rotation mark stays short on a long plank", "[frame][rotation]") {
   test::FixedSimulation simulation = test::boxOnGround();
   simulation.bodyList[1] =

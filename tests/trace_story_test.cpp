@@ -166,3 +166,70 @@ TEST_CASE("a trace names soft step's substeps, and prints round-off below its di
   CHECK(tellEvent(event, none, none, noManifolds, "micro", 0.01).lines.back() ==
         "moved the bodies apart: -2.000 mm of penetration removed");
 }
+
+namespace {
+
+/// The lines each frame of a shipped scene's traced step adds under its heads-up, one vector per
+/// event, from the drawing log: the lines from the event's label (its "contact" line) on.
+std::vector<std::vector<std::string>> tracedStories(const std::string& scene, long step,
+                                                    const std::string& scratch) {
+  const SceneFile file = loadSceneFile(IMPULSE2D_SOURCE_DIR "/demos/scenes/" + scene);
+  std::unique_ptr<World> world = buildWorld(file);
+  RenderSettings settings;
+  FrameRenderer renderer(fitCamera(world->bodies(), ViewDef{}, settings), scene, settings);
+  DrawingLog log;
+  renderer.setLog(&log);
+  traceStep(*world, step, renderer, test::scratchDirectory(scratch));
+  std::vector<std::vector<std::string>> stories;
+  for (const DrawnShape& shape : log) {
+    if (shape.kind != DrawnShape::Kind::Text || shape.role != "heads-up") continue;
+    if (shape.text.find(": contact ") != std::string::npos) stories.emplace_back();
+    if (!stories.empty() && shape.text.rfind("step ", 0) != 0) stories.back().push_back(shape.text);
+  }
+  return stories;
+}
+
+bool startsWith(const std::string& text, const std::string& start) {
+  return text.rfind(start, 0) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("a frictionless contact's trace has no friction line", "[trace][friction]") {
+  // The cradle's balls have μ = 0: no line may say friction "holds" at 0 N s.
+  const auto stories = tracedStories("cradle.toml", 9, "trace_story_cradle");
+  REQUIRE(stories.size() >= 4);
+  for (const auto& story : stories) {
+    for (const std::string& line : story) {
+      INFO(line);
+      CHECK(line.find("friction") == std::string::npos);
+    }
+  }
+}
+
+TEST_CASE(
+    "only the point closing fastest is called the worst; a pair's second corner starts "
+    "where the pair did",
+    "[trace][micro]") {
+  // The resting box lands flat in step 13: the resolver takes both corners in one impulse and
+  // reports each. The second is not "the worst closing speed": it names its pair, and its
+  // closing speed before is the speed before the pair's impulse (it closed as fast as the first
+  // corner), not the one the impulse left it.
+  const auto stories = tracedStories("resting_box.toml", 13, "trace_story_pair");
+  REQUIRE(stories.size() == 2);
+  CHECK(stories[0][0] == "velocity 0: contact 0.0, the worst closing speed");
+  CHECK(stories[1][0] ==
+        "velocity 0: contact 0.1, in one impulse with contact 0.0 (a pair of "
+        "corners)");
+  double before[2] = {};
+  double after[2] = {};
+  for (int i = 0; i < 2; ++i) {
+    REQUIRE(startsWith(stories[i][1], "closing speed "));
+    REQUIRE(std::sscanf(stories[i][1].c_str(), "closing speed %lf → %lf", &before[i], &after[i]) ==
+            2);
+  }
+  // Both corners closed at 12 g dt plus this step's g dt, 2.126 m/s, before the pair's impulse.
+  CHECK(before[1] == Approx(before[0]).margin(1e-3));
+  CHECK(before[1] == Approx(13 * 9.81 / 60.0).margin(2e-3));
+  CHECK(after[1] < 0.0);
+}

@@ -99,4 +99,7 @@ TEST_CASE("every command of the tutorial runs and prints what the page shows", "
   // The page's six sections run at least this many; fewer means the blocks were not found.
   CHECK(commandsRun >= 8);
   CHECK(outputsChecked == commandsRun);
+  // The tutorial writes its frames to a directory of its own: the demos' frames/ and their front
+  // page stay as scripts/demos made them.
+  CHECK_FALSE(fs::exists(scratch.path / "frames"));
 }

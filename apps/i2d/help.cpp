@@ -55,8 +55,8 @@ errors are one line on stderr: "error: FILE:LINE:COLUMN: what is wrong" for a sc
 const char* const kRunHelp = R"(usage: i2d run SCENE [options]
 
 Runs the scene for its [world] steps and prints: steps and simulated time, wall time and
-microseconds per step, contact points and the largest penetration at the end, the kinetic and
-potential energy at the start and the end, and what it wrote.
+microseconds per step, the contact points at the end and the penetration of the last state, the
+kinetic and potential energy at the start and the end, and what it wrote.
 
 options (a value follows the option or '=': --steps 100, --steps=100):
   --solver NAME         run this solver instead of the scene's: micro, sequential, reference,

@@ -179,7 +179,7 @@ int runCommand(const RunOptions& options) {
   summary.wallSeconds = runSteps(*simulation, scene.steps, recorders);
   summary.end = measureEnergy(*simulation);
   summary.contactPoints = impulse2d::contactPointCount(*simulation);
-  summary.largestPenetration = impulse2d::largestPenetration(*simulation);
+  summary.penetrationAtEnd = impulse2d::deepestOverlap(simulation->bodies());
   summary.outputs = recorders.finish(summary.dt);
   if (recorders.csv) {
     summary.csvPath = recorders.csv->path();

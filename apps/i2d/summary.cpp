@@ -16,8 +16,8 @@ void printSummary(std::ostream& out, const RunSummary& summary) {
       << "steps        " << summary.steps << " of " << summary.dt
       << " s = " << double(summary.steps) * summary.dt << " s simulated\n"
       << "wall time    " << summary.wallSeconds << " s, " << microsecondsPerStep << " µs per step\n"
-      << "contacts     " << summary.contactPoints << " points at the end, largest penetration "
-      << summary.largestPenetration << " m\n"
+      << "contacts     " << summary.contactPoints << " points at the end, penetration "
+      << summary.penetrationAtEnd << " m in the last state\n"
       << "kinetic      " << summary.start.kinetic << " J at start, " << summary.end.kinetic
       << " J at end\n"
       << "potential    " << summary.start.potential << " J at start, " << summary.end.potential

@@ -22,10 +22,10 @@ struct RunSummary {
   std::string scene;
   std::string solver;
   long steps = 0;
-  double dt = 0.0;                  ///< s
-  double wallSeconds = 0.0;         ///< time spent in Simulation::step
-  int contactPoints = 0;            ///< at the end
-  double largestPenetration = 0.0;  ///< m, at the end
+  double dt = 0.0;                ///< s
+  double wallSeconds = 0.0;       ///< time spent in Simulation::step
+  int contactPoints = 0;          ///< at the end
+  double penetrationAtEnd = 0.0;  ///< m, the deepest overlap of the bodies as the run left them
   Energy start;
   Energy end;
   std::optional<std::string> csvPath;

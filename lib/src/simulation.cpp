@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+
+#include "impulse2d/collide.h"
 
 namespace impulse2d {
 
@@ -44,6 +47,31 @@ double largestPenetration(const Simulation& simulation) {
   for (const Manifold& manifold : simulation.manifolds()) {
     for (int i = 0; i < manifold.pointCount; ++i) {
       deepest = std::max(deepest, manifold.points[i].penetration);
+    }
+  }
+  return deepest;
+}
+
+double deepestOverlap(const std::vector<Body>& bodies) {
+  std::vector<Body> now = bodies;  // bounds brought up to the positions
+  for (Body& body : now) body.updateCache();
+  // Sweep along x: only bodies whose x ranges overlap are collided.
+  std::vector<std::size_t> order(now.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return now[a].bounds.lower.x() < now[b].bounds.lower.x();
+  });
+  double deepest = 0.0;
+  Manifold manifold;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (std::size_t j = i + 1; j < order.size(); ++j) {
+      if (now[order[j]].bounds.lower.x() > now[order[i]].bounds.upper.x()) break;
+      // In scene order, as the world collides them.
+      const Body& a = now[std::min(order[i], order[j])];
+      const Body& b = now[std::max(order[i], order[j])];
+      if ((a.isStatic() && b.isStatic()) || !a.bounds.overlaps(b.bounds)) continue;
+      const int points = collide(a, b, 0.0, manifold);
+      for (int k = 0; k < points; ++k) deepest = std::max(deepest, manifold.points[k].penetration);
     }
   }
   return deepest;

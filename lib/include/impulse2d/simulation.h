@@ -56,8 +56,12 @@ class Simulation {
 double kineticEnergy(const Simulation& simulation);
 /// Total potential energy of the dynamic bodies in the world's gravity (J), zero at y = 0.
 double potentialEnergy(const Simulation& simulation);
-/// Deepest penetration among the last step's contact points (m); 0 without contacts.
+/// Deepest penetration among the last step's contact points (m); 0 without contacts. The points
+/// were found at the start of the last step, before its solve moved the bodies.
 double largestPenetration(const Simulation& simulation);
+/// Deepest overlap of any two bodies (one of them dynamic) as they stand now (m): the penetration
+/// of the run's state, found by colliding the bodies afresh; 0 when none overlap.
+double deepestOverlap(const std::vector<Body>& bodies);
 /// Number of contact points in the last step.
 int contactPointCount(const Simulation& simulation);
 

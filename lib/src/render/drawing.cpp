@@ -244,9 +244,11 @@ void Drawing::polygon(const std::vector<Vec2>& corners, Color fill, Color outlin
 
 void Drawing::circle(const Vec2& centre, double radius, Color fill, Color outline,
                      double outlineWidth) {
-  // The outline as a disc under a smaller one: two fills cost less than a fill and a stroke.
-  if (outlineWidth > 0.0) add(false, outline, 0.0, {{centre}, radius + 0.5 * outlineWidth});
-  add(false, fill, 0.0, {{centre}, std::max(0.0, radius - 0.5 * outlineWidth)});
+  // Fill, then the outline as a stroke, as a polygon is drawn: an outline disc under the fill
+  // would share a batch with every later outline disc and cover a fill whose colour an earlier
+  // body had already batched (a ball listed after a box of its colour came out in the outline's).
+  add(false, fill, 0.0, {{centre}, radius});
+  if (outlineWidth > 0.0) add(true, outline, outlineWidth, {{centre}, radius});
   log(DrawnShape::Kind::Circle, {centre}, fill, radius);
 }
 

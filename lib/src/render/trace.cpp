@@ -49,6 +49,49 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
   return withoutNegativeZeros(text);
 }
 
+/// B's speed towards A along the normal at the point: positive when closing.
+double closingSpeed(const std::vector<Body>& bodies, const Manifold& manifold, const Vec2& point) {
+  return -pointVelocity(bodies, manifold, point).dot(manifold.normal);
+}
+
+/// m/s: closing speeds that print alike (to the 3 decimals of the closing speed line) are equal.
+constexpr double kPrintedSpeed = 0.5e-3;
+
+/// Whether the point closes at least as fast as every contact point of the step.
+bool closesFastest(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
+                   const Manifold& manifold, const ContactPoint& point) {
+  const double speed = closingSpeed(bodies, manifold, point.point);
+  for (const Manifold& other : manifolds) {
+    if (other.bodyA < 0 || other.bodyB < 0 || std::size_t(other.bodyA) >= bodies.size() ||
+        std::size_t(other.bodyB) >= bodies.size()) {
+      continue;
+    }
+    for (int i = 0; i < other.pointCount; ++i) {
+      if (closingSpeed(bodies, other, other.points[i].point) > speed + kPrintedSpeed) return false;
+    }
+  }
+  return true;
+}
+
+/// Why the solver took this point: ", the worst closing speed" only for the point closing
+/// fastest (the resolver's queue weighs slip too); a pair's second corner names the first.
+std::string whyThisPoint(const SolverEvent& event, const std::vector<Body>& before,
+                         const std::vector<Manifold>& manifolds, const std::string& solver,
+                         int partner) {
+  if (event.phase == SolverEvent::Phase::Restitution) return ", after the substeps: the bounce";
+  if (solver != "micro") return ", in sweep order";
+  if (partner >= 0) {
+    char text[96];
+    std::snprintf(text, sizeof text, ", in one impulse with contact %d.%d (a pair of corners)",
+                  event.manifold, partner);
+    return text;
+  }
+  const Manifold& manifold = manifolds[std::size_t(event.manifold)];
+  return closesFastest(before, manifolds, manifold, manifold.points[event.point])
+             ? ", the worst closing speed"
+             : ", the largest velocity change wanted";
+}
+
 /// Friction at the point after the event: static when |λt| stays inside μλn, dynamic on it.
 std::string frictionLine(const Manifold& manifold, const ContactPoint& point) {
   const double limit = manifold.friction * point.normalImpulse;
@@ -83,34 +126,33 @@ std::string eventLabel(const SolverEvent& event, const std::string& solver) {
 
 EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
                      const std::vector<Body>& after, const std::vector<Manifold>& manifolds,
-                     const std::string& solver, double dt) {
+                     const std::string& solver, double dt, int partner) {
   EventStory story;
-  const bool velocity = event.changesVelocity();
   story.label = eventLabel(event, solver);
-  const std::string why = event.phase == SolverEvent::Phase::Restitution
-                              ? ", after the substeps: the bounce"
-                          : solver == "micro" ? ", the worst closing speed"
-                                              : ", in sweep order";
-  story.lines.push_back(story.label + why);
-  if (!velocity) {
+  if (!event.changesVelocity()) {
+    story.lines.push_back(story.label +
+                          (solver == "micro" ? ", the deepest penetration" : ", in sweep order"));
     story.lines.push_back(format("moved the bodies apart: %.3f mm of penetration removed",
                                  1000.0 * event.desiredChange));
     return story;
   }
-  if (!refersToPoint(event, after, manifolds) || before.size() != after.size()) return story;
+  if (!refersToPoint(event, after, manifolds) || before.size() != after.size()) {
+    story.lines.push_back(story.label);
+    return story;
+  }
+  story.lines.push_back(story.label + whyThisPoint(event, before, manifolds, solver, partner));
   const Manifold& manifold = manifolds[std::size_t(event.manifold)];
   const ContactPoint& point = manifold.points[event.point];
-  const double closingBefore = -pointVelocity(before, manifold, point.point).dot(manifold.normal);
-  const double closingAfter = -pointVelocity(after, manifold, point.point).dot(manifold.normal);
   const Vec2 accelerations = after[std::size_t(manifold.bodyB)].lastAcceleration -
                              after[std::size_t(manifold.bodyA)].lastAcceleration;
-  story.lines.push_back(format("closing speed %.3f → %.3f m/s; Δv wanted %.3f m/s", closingBefore,
-                               closingAfter, event.desiredChange));
+  story.lines.push_back(format("closing speed %.3f → %.3f m/s; Δv wanted %.3f m/s",
+                               closingSpeed(before, manifold, point.point),
+                               closingSpeed(after, manifold, point.point), event.desiredChange));
   story.lines.push_back(
       format("impulse λ_n = %.4f N s, λ_t = %.4f N s; accelerative velocity a·Δt = %.3f m/s",
              event.normalImpulse, event.tangentImpulse,
              std::abs(accelerations.dot(manifold.normal)) * dt));
-  story.lines.push_back(frictionLine(manifold, point));
+  if (manifold.friction > 0.0) story.lines.push_back(frictionLine(manifold, point));
   return story;
 }
 
@@ -129,8 +171,15 @@ void TraceRecorder::onSolverEvent(const SolverEvent& event, const std::vector<Bo
   FrameInfo info = describe(simulation_, renderer_.scene());
   info.step = simulation_.stepCount() + 1;  // the step being taken, not the steps done
   info.energy = totalEnergy(bodies, simulation_.settings().gravity);
-  const EventStory story = tellEvent(event, before_, bodies, manifolds, simulation_.solverName(),
-                                     simulation_.settings().dt);
+  // The micro-collision resolver counts its impulses, so two events of one count are the two
+  // corners of a pair impulse: both started from the bodies before it.
+  const bool pairsSecond = simulation_.solverName() == "micro" && event.changesVelocity() &&
+                           last_.phase == event.phase && last_.iteration == event.iteration &&
+                           last_.manifold == event.manifold && last_.point != event.point;
+  if (!pairsSecond) impulseBefore_ = before_;
+  const int partner = pairsSecond ? last_.point : -1;
+  const EventStory story = tellEvent(event, impulseBefore_, bodies, manifolds,
+                                     simulation_.solverName(), simulation_.settings().dt, partner);
   std::vector<std::string> lines = headsUpLines(info);
   lines.insert(lines.end(), story.lines.begin(), story.lines.end());
   const SceneState state{info.time, simulation_.settings().gravity};
@@ -140,6 +189,7 @@ void TraceRecorder::onSolverEvent(const SolverEvent& event, const std::vector<Bo
                                      });
   writer_.write(info.step, frame, event.changesVelocity());
   before_ = bodies;
+  last_ = event;
 }
 
 void TraceRecorder::onVelocitiesChanged(const std::vector<Body>& bodies) {
@@ -166,11 +216,12 @@ void TraceRecorder::drawHighlight(Drawing& drawing, DrawnKinds& drawn, const Sol
   drawWorldArrow(drawing, camera, point, forces.metresPerNewton / forces.dt * impulse, highlight,
                  settings);
   drawn.highlight = true;
-  if (!event.changesVelocity() || before_.size() != bodies.size()) return;
+  if (!event.changesVelocity() || impulseBefore_.size() != bodies.size()) return;
   drawing.setRole("velocity before");
-  const double beforeLength = drawWorldArrow(
-      drawing, camera, point, settings.velocityScale * pointVelocity(before_, manifold, point),
-      withOpacity(highlight, 0.4), settings);
+  const double beforeLength =
+      drawWorldArrow(drawing, camera, point,
+                     settings.velocityScale * pointVelocity(impulseBefore_, manifold, point),
+                     withOpacity(highlight, 0.4), settings);
   drawing.setRole("velocity after");
   const double afterLength = drawWorldArrow(
       drawing, camera, point, settings.velocityScale * pointVelocity(bodies, manifold, point),

@@ -21,11 +21,15 @@ struct EventStory {
   std::vector<std::string> lines;  ///< the heads-up lines
 };
 
-/// The story of `event`, from the bodies before it (`before`) and after it (`after`), under
-/// `solver` ("micro" picks the worst closing speed; the others sweep in order) with time step dt.
+/// The story of `event`, from the bodies before its impulse (`before`) and after it (`after`),
+/// under `solver` ("micro" picks the worst point first; the others sweep in order) with time step
+/// dt. `partner` is the other point of the same manifold that one impulse resolved with this one
+/// (the micro-collision resolver's pair of corners), -1 when it was resolved alone. Only the point
+/// that closes fastest is called "the worst closing speed"; a frictionless contact gets no
+/// friction line.
 EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
                      const std::vector<Body>& after, const std::vector<Manifold>& manifolds,
-                     const std::string& solver, double dt);
+                     const std::string& solver, double dt, int partner = -1);
 
 /// Watches one step of a simulation and writes a frame for every solver event in it.
 class TraceRecorder : public SolverObserver {
@@ -46,7 +50,9 @@ class TraceRecorder : public SolverObserver {
   const Simulation& simulation_;
   FrameRenderer renderer_;
   FrameWriter& writer_;
-  std::vector<Body> before_;  ///< the bodies as the last event left them
+  std::vector<Body> before_;         ///< the bodies as the last event left them
+  std::vector<Body> impulseBefore_;  ///< the bodies before the impulse the event belongs to
+  SolverEvent last_;                 ///< the last event, to find a pair's second point
 };
 
 /// Runs the simulation up to step N (N ≥ 1: the step that ends with stepCount() == N), drawing
