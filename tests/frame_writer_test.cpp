@@ -26,8 +26,10 @@ Color numberColour(int number) {
 
 /// A solid frame of that colour.
 Frame numberedFrame(int number) {
-  Frame frame{Picture(160, 120), Vec2::Zero(), Vec2(160.0, 120.0),
-              "frame " + std::to_string(number)};
+  Frame frame;
+  frame.picture = Picture(160, 120);
+  frame.sceneSize = Vec2(160.0, 120.0);
+  frame.caption = "frame " + std::to_string(number);
   Drawing(frame.picture).rectangle(Vec2::Zero(), Vec2(160.0, 120.0), numberColour(number));
   return frame;
 }
@@ -90,15 +92,27 @@ TEST_CASE("The contact sheet shows evenly spaced frames, first and last, in a gr
     CHECK((gap == 2 || gap == 3));  // 29 frames apart over 11 gaps: 2.64 on average
   }
   CHECK(evenlySpaced(5, 12) == std::vector<int>{0, 1, 2, 3, 4});
+  // 61 frames (a run of 180 steps, every 3rd): 11 of them split it exactly, every 6th frame,
+  // where 12 would leave gaps of 5 and 6.
+  const std::vector<int> exact = evenlySpaced(61, 12);
+  REQUIRE(exact.size() == 11);
+  for (std::size_t k = 0; k < exact.size(); ++k) CHECK(exact[k] == 6 * int(k));
 
+  // Cells of a 4:3 scene, 480 pixels wide: 4 × 3 of them are nearest a 16:9 slide.
   const SheetLayout layout = contactSheetLayout(evenlySpaced(30, 12), 160, 120, settings);
+  CHECK(layout.thumbnailWidth >= 480);
   CHECK(layout.columns == 4);
   CHECK(layout.rows == 3);
-  CHECK(layout.thumbnailHeight == settings.sheetThumbnailWidth * 120 / 160);
-  CHECK(layout.width == 4 * (settings.sheetThumbnailWidth + settings.spacing) + settings.spacing);
-  const SheetLayout small = contactSheetLayout(evenlySpaced(5, 12), 160, 120, settings);
-  CHECK(small.columns == 4);
-  CHECK(small.rows == 2);
+  CHECK(layout.thumbnailHeight == layout.thumbnailWidth * 120 / 160);
+  CHECK(layout.width == 4 * (layout.thumbnailWidth + settings.spacing) + settings.spacing);
+  CHECK(layout.titleHeight > 0);
+  CHECK(layout.legendHeight > 0);
+  // A comparison of two panels: each panel 480 wide, 6 frames of them.
+  const SheetLayout pairs =
+      contactSheetLayout(evenlySpaced(30, sheetFrameCount(2, settings)), 160, 120, settings, 2);
+  CHECK(pairs.frames.size() == 6);
+  CHECK(pairs.cellWidth() == 2 * pairs.thumbnailWidth + settings.spacing);
+  CHECK(pairs.thumbnailWidth >= 480);
 }
 
 TEST_CASE("The contact sheet file puts each chosen frame in its cell", "[frames][sheet]") {
@@ -119,6 +133,37 @@ TEST_CASE("The contact sheet file puts each chosen frame in its cell", "[frames]
     const int y = layout.thumbnailY(int(k)) + layout.thumbnailHeight / 2;
     CHECK(sheet.at(x, y) == numberColour(layout.frames[k]));
   }
+  // One legend, in a strip under the grid.
+  CHECK(sheet.at(layout.width / 2, layout.height - 2) == settings.colours.stripBackground);
+}
+
+TEST_CASE("A sheet draws each scene again at its cell's size, text at sheetTextSize",
+          "[frames][sheet]") {
+  const fs::path root = test::scratchDirectory("sheet_redraw");
+  test::FixedSimulation simulation = test::boxOnGround();
+  FrameRenderer renderer = boxRenderer(simulation);
+  RenderSettings settings;
+  FrameWriter writer(root, "box", 1, "", settings);
+  const Frame frame = renderer.draw(simulation);
+  REQUIRE(frame.redraw);
+  writer.write(0, frame);
+  writer.write(1, frame);
+  const Image sheet = readPng(writer.writeContactSheet());
+  const SheetLayout layout =
+      contactSheetLayout({0, 1}, frame.camera.width, frame.camera.height, settings);
+  CHECK(sheet.width() == layout.width);
+  // Drawn again through a camera 480 / 800 the frame's, the text at the sheet's size.
+  DrawingLog log;
+  Picture cell(layout.thumbnailWidth, layout.thumbnailHeight);
+  Drawing drawing(cell, &log);
+  const Camera camera = frame.camera.resized(double(layout.thumbnailWidth) / frame.camera.width,
+                                             settings.sheetTextSize);
+  const DrawnKinds drawn = frame.redraw(drawing, camera);
+  CHECK(drawn.normalForces == frame.drawn.normalForces);
+  // The same world point at the cell's centre, at 480 / 800 the scale: the same view, smaller.
+  CHECK(camera.centre == frame.camera.centre);
+  CHECK(camera.scale == Approx(frame.camera.scale * layout.thumbnailWidth / frame.camera.width));
+  CHECK(camera.textSize == settings.sheetTextSize);
 }
 
 TEST_CASE("An unwritable frame directory gives one error naming the path", "[frames][errors]") {
@@ -182,6 +227,8 @@ TEST_CASE("Panels sit in the grid that fills a 16:9 slide best, under their labe
   const Frame blue = numberedFrame(30);
   const Frame image = composePanels({{&red, "micro"}, {&blue, "sequential"}}, settings);
   const int label = panelLabelHeight(settings, settings.minimumTextSize);
+  CHECK(image.panels.size() == 2);
+  CHECK(image.panelLabels == std::vector<std::string>{"micro", "sequential"});
   CHECK(image.picture.width() == 2 * 160 + 3 * settings.spacing);
   CHECK(image.picture.height() == 120 + label + 2 * settings.spacing);
   const Image pixels = rasterise(image.picture);

@@ -263,11 +263,33 @@ TEST_CASE("a --set assignment changes one world or solver setting, written as in
   CHECK(scene.solverSettings.micro.velocityIterationsPerContact == 3);
 }
 
+TEST_CASE("a --set render.KEY changes the view as the [render] table would", "[scene-file][set]") {
+  SceneFile scene = parseScene(kOneBall, "ball.toml");
+  CHECK_FALSE(scene.view.fixed());
+  applySetting(scene, "render.scale=300");
+  applySetting(scene, "render.zoom=2");
+  applySetting(scene, "render.follow=" + scene.bodies.back().name);
+  CHECK(scene.view.scale == 300.0);
+  CHECK(scene.view.zoom == 2.0);
+  CHECK(scene.view.follow == scene.bodies.back().name);
+  CHECK_FALSE(scene.view.fixed());  // a scale alone still fits the centre
+  applySetting(scene, "render.view=[[-1, 0], [3, 2]]");
+  REQUIRE(scene.view.window);
+  CHECK(scene.view.window->lower == Vec2(-1.0, 0.0));
+  CHECK(scene.view.window->upper == Vec2(3.0, 2.0));
+  CHECK(scene.view.fixed());
+}
+
 TEST_CASE("a bad --set is one located error", "[scene-file][set][errors]") {
   CHECK(errorOfSetting("dt=1") ==
         "--set:1:1: expected section.key=value, such as solver.velocity_iterations=12, not 'dt=1'");
   CHECK(errorOfSetting("foo.bar=1") ==
-        "--set:1:1: unknown key 'foo' in --set (known: world, solver)");
+        "--set:1:1: unknown key 'foo' in --set (known: world, solver, render)");
+  CHECK(errorOfSetting("render.follow=nobody") ==
+        "--set:1:15: the view follows body 'nobody', which the scene does not have");
+  CHECK(errorOfSetting("render.view=[[1, 0], [0, 1]]") ==
+        "--set:1:13: 'view' must go from its lower left corner [x0, y0] to its upper right "
+        "[x1, y1], with x0 < x1 and y0 < y1");
   CHECK(errorOfSetting("world.dt=-1") == "--set:1:10: dt = -1: must be in [1e-06, 1]");
   CHECK(errorOfSetting("world.steps=many") ==
         "--set:1:13: 'steps' must be an integer, not a string");

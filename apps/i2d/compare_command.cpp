@@ -26,12 +26,12 @@ using impulse2d::SceneFile;
 using impulse2d::Simulation;
 using namespace impulse2d::render;
 
-/// One panel's run: its scene, its simulation, the renderer that draws it and its figures.
+/// One panel's run: its scene, its simulation, the states its frames show and its figures.
 struct PanelRun {
   std::string label;
   SceneFile scene;
   std::unique_ptr<Simulation> simulation;
-  std::unique_ptr<FrameRenderer> renderer;
+  std::vector<FrameState> states;
   std::vector<StepFigures> figures;
 };
 
@@ -76,19 +76,16 @@ void matchFirstPanelTime(const SceneFile& first, const std::string& label, Scene
   }
 }
 
-std::vector<PanelRun> startPanels(const CompareOptions& options, const RenderSettings& settings) {
+std::vector<PanelRun> startPanels(const CompareOptions& options) {
   const SceneFile file = impulse2d::loadSceneFile(options.scene.scenePath);
   checkPanelPixels(file, options);
-  const Camera camera =
-      sceneCamera(file, options.frames, settings);  // --set changes no body: one view for all
   std::vector<PanelRun> runs;
   for (const PanelOption& panel : options.panels) {
-    PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, nullptr, {}};
+    PanelRun run{panel.label, panelScene(file, options.scene, panel), nullptr, {}, {}};
     if (!runs.empty()) {
       matchFirstPanelTime(runs.front().scene, run.label, run.scene, options.scene.scenePath);
     }
     run.simulation = impulse2d::makeSimulation(run.scene);
-    run.renderer = std::make_unique<FrameRenderer>(camera, run.scene.name, settings);
     runs.push_back(std::move(run));
   }
   return runs;
@@ -147,12 +144,32 @@ std::vector<std::string> plotPanels(const std::string& directory, const std::str
   return writeRunPlots(directory, name, series);
 }
 
-void writePanels(std::vector<PanelRun>& runs, FrameWriter& writer, const RenderSettings& settings) {
-  std::vector<Frame> frames;
-  for (PanelRun& run : runs) frames.push_back(run.renderer->draw(*run.simulation));
-  std::vector<Panel> panels;
-  for (std::size_t k = 0; k < runs.size(); ++k) panels.push_back({&frames[k], runs[k].label});
-  writer.write(runs.front().simulation->stepCount(), composePanels(panels, settings));
+/// Keeps each panel's state for its frame, and shows it to the camera they share.
+void keepPanels(std::vector<PanelRun>& runs, RunCamera& camera, const RenderSettings& settings) {
+  for (PanelRun& run : runs) {
+    run.states.push_back(captureFrame(*run.simulation, run.scene.name, settings));
+    camera.add(run.states.back().bodies);
+  }
+}
+
+/// Draws the kept states through the shared camera, the panels of each step side by side.
+void writePanels(std::vector<PanelRun>& runs, const std::vector<long>& steps,
+                 const RunCamera& camera, FrameWriter& writer, const RenderSettings& settings) {
+  std::vector<FrameRenderer> renderers;
+  for (const PanelRun& run : runs) {
+    renderers.emplace_back(camera.cameraFor(run.states.front().bodies), run.scene.name, settings);
+  }
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    std::vector<Frame> frames;
+    for (std::size_t p = 0; p < runs.size(); ++p) {
+      renderers[p].setCamera(camera.cameraFor(runs[p].states[k].bodies));
+      frames.push_back(renderers[p].draw(runs[p].states[k]));
+      runs[p].states[k] = FrameState{};  // drawn: its frame keeps what a sheet needs
+    }
+    std::vector<Panel> panels;
+    for (std::size_t p = 0; p < runs.size(); ++p) panels.push_back({&frames[p], runs[p].label});
+    writer.write(steps[k], composePanels(panels, settings));
+  }
 }
 
 void printPanelSummary(const std::vector<PanelRun>& runs) {
@@ -171,7 +188,9 @@ void printPanelSummary(const std::vector<PanelRun>& runs) {
 int compareCommand(const CompareOptions& options) {
   checkVideoPossible(options.frames);
   const RenderSettings settings = renderSettings(options.frames);
-  std::vector<PanelRun> runs = startPanels(options, settings);
+  std::vector<PanelRun> runs = startPanels(options);
+  // --set changes no body: one camera for all panels, fitted to them all.
+  RunCamera camera = runCamera(runs.front().scene, options.frames, settings);
   createOutputDirectory(options.frames.directory, "--frames");
   createOutputDirectory(options.plots, "--plots");
   if (options.plots) preparePlotDirectory(*options.plots);
@@ -180,13 +199,18 @@ int compareCommand(const CompareOptions& options) {
                      comparePrefix(first.name), settings, options.frames.format);
   std::cout << "scene        " << first.name << " (" << runs.size() << " panels, " << first.steps
             << " steps)\n";
+  std::vector<long> steps;
   for (long step = 0; step <= first.steps; ++step) {
     if (step > 0) stepPanels(runs, double(step) * first.world.dt);
     measurePanels(runs);
-    if (isRecorded(step, first.steps, options.every)) writePanels(runs, writer, settings);
+    if (!isRecorded(step, first.steps, options.every)) continue;
+    keepPanels(runs, camera, settings);
+    steps.push_back(step);
   }
+  writePanels(runs, steps, camera, writer, settings);
   writer.writeContactSheet();
   printPanelSummary(runs);
+  std::cout << viewLine(camera.shown()) << "\n";
   for (const std::string& line : describeFrames(writer)) std::cout << line << "\n";
   std::vector<PlotSeries> series;
   for (const PanelRun& run : runs) series.push_back({run.label, run.figures});

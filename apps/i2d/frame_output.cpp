@@ -1,6 +1,8 @@
 // Frames, sheets and videos of the i2d commands.
 #include "frame_output.h"
 
+#include <cstdio>
+
 #include "failures.h"
 #include "impulse2d/render/animation.h"
 #include "impulse2d/render/video.h"
@@ -17,11 +19,26 @@ RenderSettings renderSettings(const FrameOptions& options) {
   return settings;
 }
 
-Camera sceneCamera(const impulse2d::SceneFile& scene, const FrameOptions& options,
-                   const RenderSettings& settings) {
+RunCamera runCamera(const impulse2d::SceneFile& scene, const FrameOptions& options,
+                    const RenderSettings& settings) {
   const int width = options.size ? options.size->width : scene.view.width;
   const int height = options.size ? options.size->height : scene.view.height;
-  return fitCamera(impulse2d::buildBodies(scene), scene.view, settings, width, height);
+  return RunCamera(scene.view, settings, width, height);
+}
+
+Camera sceneCamera(const impulse2d::SceneFile& scene, const FrameOptions& options,
+                   const RenderSettings& settings) {
+  RunCamera camera = runCamera(scene, options, settings);
+  const std::vector<impulse2d::Body> bodies = impulse2d::buildBodies(scene);
+  camera.add(bodies);
+  return camera.cameraFor(bodies);
+}
+
+std::string viewLine(const impulse2d::Aabb& shown) {
+  char text[160];
+  std::snprintf(text, sizeof text, "view         %.3f .. %.3f m, %.3f .. %.3f m", shown.lower.x(),
+                shown.upper.x(), shown.lower.y(), shown.upper.y());
+  return text;
 }
 
 void checkVideoPossible(const FrameOptions& options) {
@@ -69,19 +86,29 @@ std::vector<std::string> describeFrames(const FrameWriter& writer) {
 
 FrameRecorder::FrameRecorder(const FrameOptions& options, const impulse2d::SceneFile& scene,
                              int every)
-    : renderer_(sceneCamera(scene, options, renderSettings(options)), scene.name,
-                renderSettings(options)),
-      writer_(*options.directory, scene.name, every, "", renderSettings(options), options.format),
+    : settings_(renderSettings(options)),
+      writer_(*options.directory, scene.name, every, "", settings_, options.format),
       options_(options),
       scene_(scene.name) {}
 
 void FrameRecorder::record(const impulse2d::Simulation& simulation, long lastStep) {
   const long step = simulation.stepCount();
   if (step == 0) loads_ = hasLoads(simulation);
-  if (isRecorded(step, lastStep, writer_.every())) writer_.write(step, renderer_.draw(simulation));
+  if (!isRecorded(step, lastStep, writer_.every())) return;
+  states_.push_back(captureFrame(simulation, scene_, settings_));
+  steps_.push_back(step);
 }
 
-std::vector<std::string> FrameRecorder::finish(double dt, const std::vector<StepFigures>& figures) {
+std::vector<std::string> FrameRecorder::finish(const RunCamera& camera, double dt,
+                                               const std::vector<StepFigures>& figures) {
+  if (states_.empty()) return {};
+  FrameRenderer renderer(camera.cameraFor(states_.front().bodies), scene_, settings_);
+  renderer.fitForces(states_.front());
+  for (std::size_t k = 0; k < states_.size(); ++k) {
+    renderer.setCamera(camera.cameraFor(states_[k].bodies));
+    writer_.write(steps_[k], renderer.draw(states_[k]));
+    states_[k] = FrameState{};  // drawn: its frame keeps what a sheet needs
+  }
   writer_.writeContactSheet();
   std::vector<std::string> lines = describeFrames(writer_);
   const std::vector<ViewerPlot> plots =

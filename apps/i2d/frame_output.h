@@ -18,11 +18,20 @@ namespace i2d {
 /// The default render settings with the command line's overlay switches and theme.
 impulse2d::render::RenderSettings renderSettings(const FrameOptions& options);
 
-/// The camera every frame of the scene shares: fitted to its starting bodies or its [render],
-/// in a frame of --size or the [render] table's size.
+/// The camera of a run's frames, in a frame of --size or the [render] table's size, before the
+/// run's states are added to it.
+impulse2d::render::RunCamera runCamera(const impulse2d::SceneFile& scene,
+                                       const FrameOptions& options,
+                                       const impulse2d::render::RenderSettings& settings);
+
+/// The camera of frames of the scene as it starts (a traced step's).
 impulse2d::render::Camera sceneCamera(const impulse2d::SceneFile& scene,
                                       const FrameOptions& options,
                                       const impulse2d::render::RenderSettings& settings);
+
+/// The summary's line naming the world rectangle the frames show:
+/// "view         X0 .. X1 m, Y0 .. Y1 m".
+std::string viewLine(const impulse2d::Aabb& shown);
 
 /// Throws RunFailure before a run when --video or --animation mp4 was asked for and ffmpeg is
 /// not on PATH.
@@ -44,23 +53,28 @@ bool isRecorded(long step, long lastStep, int every);
 /// The summary lines of written frames: where they are, the sheet, the video.
 std::vector<std::string> describeFrames(const impulse2d::render::FrameWriter& writer);
 
-/// The frames of one run: every K-th step and the last, then the sheet and the video.
+/// The frames of one run: every K-th step and the last, kept as the run goes and drawn when it
+/// ends, through the camera fitted to them all; then the sheet and the video.
 class FrameRecorder {
  public:
   /// Creates DIR/<scene>/ and checks it is writable (RenderError naming the path).
   FrameRecorder(const FrameOptions& options, const impulse2d::SceneFile& scene, int every);
 
-  /// Draws and writes the frame of the simulation's current step if the run records it.
+  /// Keeps the state of the simulation's current step if the run records it.
   void record(const impulse2d::Simulation& simulation, long lastStep);
-  /// Writes the contact sheet, the viewer page (its table and plots from `figures`, by step) and
-  /// the video or animation when asked; returns the summary lines.
-  std::vector<std::string> finish(double dt, const std::vector<StepFigures>& figures);
+  /// Draws and writes the kept states through `camera` (every kept state added to it), then the
+  /// contact sheet, the viewer page (its table and plots from `figures`, by step) and the video
+  /// or animation when asked; returns the summary lines.
+  std::vector<std::string> finish(const impulse2d::render::RunCamera& camera, double dt,
+                                  const std::vector<StepFigures>& figures);
 
  private:
-  impulse2d::render::FrameRenderer renderer_;
+  impulse2d::render::RenderSettings settings_;
   impulse2d::render::FrameWriter writer_;
   FrameOptions options_;
   std::string scene_;
+  std::vector<impulse2d::render::FrameState> states_;
+  std::vector<long> steps_;
   bool loads_ = false;  ///< the scene has applied loads: the viewer plots force against friction
 };
 

@@ -27,6 +27,8 @@ using impulse2d::Simulation;
 /// What a run writes as it goes: the CSV, the frames and the figures of every step (for the
 /// plots and the viewer), each when asked for.
 struct Recorders {
+  /// Fitted to every recorded state, for the frames and the summary's view line.
+  std::unique_ptr<impulse2d::render::RunCamera> camera;
   std::unique_ptr<CsvWriter> csv;
   std::unique_ptr<CsvWriter> contacts;
   std::unique_ptr<FrameRecorder> frames;
@@ -39,6 +41,7 @@ struct Recorders {
   void record(const Simulation& simulation, long lastStep) {
     const long step = simulation.stepCount();
     const double time = double(step) * simulation.settings().dt;
+    if (isRecorded(step, lastStep, every)) camera->add(simulation.bodies());
     if (csv && isRecorded(step, lastStep, every)) csv->writeStep(step, time, simulation.bodies());
     if (contacts && isRecorded(step, lastStep, every)) {
       // A world with substeps holds its last substep's impulses, taken over dt / substeps.
@@ -53,8 +56,10 @@ struct Recorders {
   /// summary lines.
   std::vector<std::string> finish(double dt) {
     if (csv) csv->commit();
-    std::vector<std::string> lines;
-    if (frames) lines = frames->finish(dt, figures);
+    std::vector<std::string> lines{viewLine(camera->shown())};
+    if (frames) {
+      for (const std::string& line : frames->finish(*camera, dt, figures)) lines.push_back(line);
+    }
     if (contacts) {
       contacts->commit();
       lines.push_back("contacts     " + contacts->path() + " (" +
@@ -106,6 +111,8 @@ Recorders openRecorders(const RunOptions& options, const SceneFile& scene) {
   recorders.plots = options.plots;
   recorders.scene = scene.name;
   recorders.solver = scene.solver;
+  recorders.camera = std::make_unique<impulse2d::render::RunCamera>(
+      runCamera(scene, options.frames, renderSettings(options.frames)));
   if (options.frames.directory) {
     recorders.frames = std::make_unique<FrameRecorder>(options.frames, scene, options.every);
   }

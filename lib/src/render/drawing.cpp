@@ -242,6 +242,12 @@ void Drawing::polygon(const std::vector<Vec2>& corners, Color fill, Color outlin
   log(DrawnShape::Kind::Polygon, corners, fill, outlineWidth);
 }
 
+void Drawing::outline(const std::vector<Vec2>& corners, Color colour, double width) {
+  if (corners.empty() || !(width > 0.0)) return;
+  add(true, colour, width, {corners});
+  log(DrawnShape::Kind::Polygon, corners, colour, width);
+}
+
 void Drawing::circle(const Vec2& centre, double radius, Color fill, Color outline,
                      double outlineWidth) {
   // Fill, then the outline as a stroke, as a polygon is drawn: an outline disc under the fill
@@ -350,6 +356,18 @@ void Drawing::placePart(const Picture& picture, const Vec2& from, const Vec2& si
   cairo_clip(cairo_);
   cairo_set_source_surface(cairo_, picture.surface(), -from.x(), -from.y());
   cairo_paint(cairo_);
+  cairo_restore(cairo_);
+}
+
+void Drawing::inside(const Vec2& corner, const Vec2& size,
+                     const std::function<void(Drawing&)>& draw) {
+  flush();
+  cairo_save(cairo_);
+  cairo_translate(cairo_, corner.x(), corner.y());
+  cairo_rectangle(cairo_, 0.0, 0.0, size.x(), size.y());
+  cairo_clip(cairo_);
+  draw(*this);
+  flush();
   cairo_restore(cairo_);
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+#include <utility>
 
 #include "impulse2d/collide.h"
 #include "impulse2d/render/legend.h"
@@ -61,20 +63,39 @@ ArrowSize arrowSize(const Camera& camera, const RenderSettings& settings) {
           settings.arrowHeadWidth * camera.textSize};
 }
 
-void drawBody(Drawing& drawing, const Camera& camera, const Body& body, Color fill,
-              const RenderSettings& settings) {
-  const Color outline = settings.colours.outline;
-  const Vec2 centre = camera.toPixels(body.position);
+/// A body's fill, without its outline: every fill goes down before any outline, so a body's
+/// neighbour never paints over its edge.
+void drawBodyFill(Drawing& drawing, const Camera& camera, const Body& body, Color fill) {
   drawing.setRole("body");
   if (body.shape.type == ShapeType::Circle) {
-    drawing.circle(centre, camera.scale * body.shape.radius, fill, outline, settings.outlineWidth);
+    drawing.circle(camera.toPixels(body.position), camera.scale * body.shape.radius, fill, fill,
+                   0.0);
+    return;
+  }
+  std::vector<Vec2> corners;
+  corners.reserve(body.shape.vertices.size());
+  for (const Vec2& vertex : body.shape.vertices) {
+    corners.push_back(camera.toPixels(body.toWorld(vertex)));
+  }
+  drawing.polygon(corners, fill, fill, 0.0);
+}
+
+/// A body's outline and, when it moves, the mark of its rotation.
+void drawBodyOutline(Drawing& drawing, const Camera& camera, const Body& body,
+                     const RenderSettings& settings) {
+  const Color outline = settings.colours.outline;
+  const double width = settings.outlineWidth * camera.textSize;
+  const Vec2 centre = camera.toPixels(body.position);
+  drawing.setRole("body outline");
+  if (body.shape.type == ShapeType::Circle) {
+    drawing.ring(centre, camera.scale * body.shape.radius, outline, width);
   } else {
     std::vector<Vec2> corners;
     corners.reserve(body.shape.vertices.size());
     for (const Vec2& vertex : body.shape.vertices) {
       corners.push_back(camera.toPixels(body.toWorld(vertex)));
     }
-    drawing.polygon(corners, fill, outline, settings.outlineWidth);
+    drawing.outline(corners, outline, width);
   }
   if (settings.overlays.rotationMarks && !body.isStatic()) {
     drawing.setRole("rotation mark");
@@ -97,7 +118,7 @@ void drawFrictionGauge(Drawing& drawing, const Vec2& at, double use, double leng
   const bool onLimit = use >= 1.0 - settings.gaugeLimitTolerance;
   drawing.setRole("friction gauge");
   // The frame as a dark rectangle under the empty bar: two fills, cheaper than a stroke.
-  const Vec2 rim = Vec2::Constant(settings.outlineWidth);
+  const Vec2 rim = Vec2::Constant(settings.swatchOutlineWidth);
   drawing.rectangle(corner - rim, size + 2.0 * rim, colours.outline);
   drawing.rectangle(corner, size, colours.gaugeBackground);
   const double filled = std::min(use, 1.0) * size.x();
@@ -199,7 +220,7 @@ void drawContactPoint(Drawing& drawing, const Camera& camera, const std::vector<
   if (show.contactPoints) {
     drawing.setRole("contact point");
     drawing.circle(at, settings.contactPointRadius, colours.contactPoint, colours.outline,
-                   settings.outlineWidth);
+                   settings.swatchOutlineWidth);
   }
 }
 
@@ -322,6 +343,21 @@ const char* nameOf(BodyState state) {
   return "static";
 }
 
+void addKinds(DrawnKinds& into, const DrawnKinds& drawn) {
+  for (std::size_t i = 0; i < into.states.size(); ++i) into.states[i] |= drawn.states[i];
+  into.normalForces |= drawn.normalForces;
+  into.staticFriction |= drawn.staticFriction;
+  into.dynamicFriction |= drawn.dynamicFriction;
+  into.frictionLimits |= drawn.frictionLimits;
+  into.loads |= drawn.loads;
+  into.weights |= drawn.weights;
+  into.slidingVelocities |= drawn.slidingVelocities;
+  into.velocities |= drawn.velocities;
+  into.gauges |= drawn.gauges;
+  into.highlight |= drawn.highlight;
+  into.velocityChange |= drawn.velocityChange;
+}
+
 double restingForceEstimate(const std::vector<Body>& bodies, const Vec2& gravity) {
   double heaviest = 0.0;
   for (const Body& body : bodies) {
@@ -339,6 +375,16 @@ ForceScale fitForceScale(const std::vector<Body>& bodies, const Vec2& gravity, d
   const double force = restingForceEstimate(bodies, gravity);
   const double length = settings.restingForceLength * camera.height / camera.scale;  // m
   forces.metresPerNewton = force > 0.0 ? length / force : length;  // weightless: 1 N is `length`
+  // The room each body's arrows have: its column's weight within contactArrowRoom of its height.
+  for (const Body& body : bodies) {
+    if (body.isStatic()) continue;
+    const double weight = columnWeight(bodies, body, gravity.norm());
+    const double height = body.bounds.upper.y() - body.bounds.lower.y();
+    if (weight > 0.0 && height > 0.0) {
+      forces.metresPerNewton =
+          std::min(forces.metresPerNewton, settings.contactArrowRoom * height / weight);
+    }
+  }
   return forces;
 }
 
@@ -453,10 +499,13 @@ DrawnKinds drawScene(Drawing& drawing, const Camera& camera, const std::vector<B
   DrawnKinds drawn;
   const std::vector<BodyState> states = classifyBodies(bodies, manifolds, settings);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    drawBody(drawing, camera, bodies[i], colourOf(states[i], settings.colours), settings);
+    drawBodyFill(drawing, camera, bodies[i], colourOf(states[i], settings.colours));
     drawn.states[std::size_t(states[i])] = true;
   }
-  // Layers, each painted before the next: bodies, contact arrows and points, gauges, loads.
+  // Layers, each painted before the next: fills, outlines, contact arrows and points, gauges,
+  // loads.
+  drawing.flush();
+  for (const Body& body : bodies) drawBodyOutline(drawing, camera, body, settings);
   drawing.flush();
   for (const Manifold& manifold : manifolds) {
     if (!validManifold(manifold, bodies.size())) continue;
@@ -513,25 +562,40 @@ int FrameRenderer::frameHeight() const {
   return camera_.headsUpHeight + camera_.height + camera_.legendHeight;
 }
 
-// A world with substeps reports the last substep's impulses, taken over dt / substeps.
-void FrameRenderer::fitForces(const Simulation& simulation) {
+FrameState captureFrame(const Simulation& simulation, const std::string& scene,
+                        const RenderSettings& settings) {
   const WorldSettings& world = simulation.settings();
-  forces_ = fitForceScale(simulation.bodies(), world.gravity,
-                          world.dt / std::max(1, world.substeps), camera_, settings_);
+  const FrameInfo info = describe(simulation, scene);
+  FrameState state;
+  state.bodies = simulation.bodies();
+  // A world with substeps reports the last substep's impulses, taken over dt / substeps.
+  state.impulseTime = world.dt / std::max(1, world.substeps);
+  state.gravity = world.gravity;
+  // The loads as they acted in the last (sub)step, beside the contact forces they caused.
+  state.scene = SceneState{std::max(0.0, info.time - state.impulseTime), world.gravity};
+  state.manifolds = simulation.stepCount() == 0 && simulation.manifolds().empty()
+                        ? startingContacts(state.bodies, settings.startingContactMargin)
+                        : simulation.manifolds();
+  state.headsUp = headsUpLines(info);
+  state.caption = caption(info);
+  return state;
+}
+
+void FrameRenderer::fitForces(const Simulation& simulation) {
+  fitForces(captureFrame(simulation, scene_, settings_));
+}
+
+void FrameRenderer::fitForces(const FrameState& state) {
+  forces_ = fitForceScale(state.bodies, state.gravity, state.impulseTime, camera_, settings_);
 }
 
 Frame FrameRenderer::draw(const Simulation& simulation) {
-  if (forces_.metresPerNewton <= 0.0) fitForces(simulation);
-  const FrameInfo info = describe(simulation, scene_);
-  // The loads as they acted in the last (sub)step, beside the contact forces they caused.
-  const SceneState state{std::max(0.0, info.time - forces_.dt), simulation.settings().gravity};
-  if (simulation.stepCount() == 0 && simulation.manifolds().empty()) {
-    return draw(simulation.bodies(),
-                startingContacts(simulation.bodies(), settings_.startingContactMargin), state,
-                headsUpLines(info), caption(info));
-  }
-  return draw(simulation.bodies(), simulation.manifolds(), state, headsUpLines(info),
-              caption(info));
+  return draw(captureFrame(simulation, scene_, settings_));
+}
+
+Frame FrameRenderer::draw(const FrameState& state) {
+  if (forces_.metresPerNewton <= 0.0) fitForces(state);
+  return draw(state.bodies, state.manifolds, state.scene, state.headsUp, state.caption);
 }
 
 Frame FrameRenderer::draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
@@ -541,24 +605,40 @@ Frame FrameRenderer::draw(const std::vector<Body>& bodies, const std::vector<Man
     forces_ = fitForceScale(bodies, Vec2::Zero(), forces_.dt, camera_, settings_);
   const int height = frameHeight();
   const double top = camera_.headsUpHeight;
-  const Frame frame{Picture(camera_.width, height), Vec2(0.0, top),
-                    Vec2(camera_.width, camera_.height), caption};
+  Frame frame;
+  frame.picture = Picture(camera_.width, height);
+  frame.sceneCorner = Vec2(0.0, top);
+  frame.sceneSize = Vec2(camera_.width, camera_.height);
+  frame.caption = caption;
+  frame.title = headsUp.empty() ? scene_ : headsUp.front();
+  frame.camera = camera_;
+  frame.forces = forces_;
   // One recording, the scene moved down under the heads-up strip: the strips are drawn after
   // it and cover whatever of it reaches past the scene area.
   Drawing whole(frame.picture, log_);
   whole.translate(Vec2(0.0, top));
   whole.rectangle(Vec2::Zero(), Vec2(camera_.width, camera_.height), settings_.colours.background);
-  DrawnKinds drawn = drawScene(whole, camera_, bodies, manifolds, forces_, state, settings_);
+  frame.drawn = drawScene(whole, camera_, bodies, manifolds, forces_, state, settings_);
   if (extra) {
     whole.flush();
-    extra(whole, drawn);
+    extra(whole, frame.drawn);
+  } else {
+    frame.redraw = [snapshot =
+                        std::make_shared<const std::pair<std::vector<Body>, std::vector<Manifold>>>(
+                            bodies, manifolds),
+                    forces = forces_, state,
+                    settings = settings_](Drawing& drawing, const Camera& camera) {
+      drawing.rectangle(Vec2::Zero(), Vec2(camera.width, camera.height),
+                        settings.colours.background);
+      return drawScene(drawing, camera, snapshot->first, snapshot->second, forces, state, settings);
+    };
   }
   whole.translate(Vec2(0.0, -top));
   if (settings_.overlays.headsUp) {
     drawHeadsUp(whole, headsUp, camera_.width, top, camera_.textSize, settings_);
   }
   if (settings_.overlays.legend) {
-    drawLegend(whole, top + camera_.height, camera_.width, height, drawn, forces_, camera_,
+    drawLegend(whole, top + camera_.height, camera_.width, height, frame.drawn, forces_, camera_,
                settings_);
   }
   return frame;

@@ -101,9 +101,12 @@ std::filesystem::path FrameWriter::writeContactSheet() const {
   if (steps_.empty()) {
     throw RenderError("no frames in '" + directory_.string() + "' to make a contact sheet of");
   }
-  const Vec2& scene = frames_.front().sceneSize;
-  const SheetLayout layout = contactSheetLayout(chooseFrames(preferred_, settings_.sheetThumbnails),
-                                                int(scene.x()), int(scene.y()), settings_);
+  const Frame& first = frames_.front();
+  const int panels = std::max(1, int(first.panels.size()));
+  const Vec2& scene = first.panels.empty() ? first.sceneSize : first.panels.front().sceneSize;
+  const SheetLayout layout =
+      contactSheetLayout(chooseFrames(preferred_, sheetFrameCount(panels, settings_)),
+                         int(scene.x()), int(scene.y()), settings_, panels);
   writePicture(sheetPath(), drawContactSheet(layout, frames_, settings_), format_);
   return sheetPath();
 }

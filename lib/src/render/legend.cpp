@@ -38,7 +38,7 @@ void drawSwatch(Drawing& drawing, const Entry& entry, const Vec2& corner, double
     case Swatch::Square:
       drawing.polygon(
           {top, top + Vec2(width, 0.0), top + Vec2(width, height), top + Vec2(0.0, height)},
-          entry.colour, outline, settings.outlineWidth);
+          entry.colour, outline, settings.swatchOutlineWidth);
       break;
     case Swatch::Arrow:
     case Swatch::LimitMark:
@@ -55,7 +55,7 @@ void drawSwatch(Drawing& drawing, const Entry& entry, const Vec2& corner, double
       const Vec2 bar = middle - Vec2(0.0, 0.25 * height);
       drawing.polygon({bar, bar + Vec2(width, 0.0), bar + Vec2(width, 0.5 * height),
                        bar + Vec2(0.0, 0.5 * height)},
-                      settings.colours.gaugeBackground, outline, settings.outlineWidth);
+                      settings.colours.gaugeBackground, outline, settings.swatchOutlineWidth);
       drawing.rectangle(bar, Vec2(0.6 * width, 0.5 * height), entry.colour);
       break;
     }

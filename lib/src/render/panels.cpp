@@ -53,8 +53,19 @@ Frame composePanels(const std::vector<Panel>& panels, const RenderSettings& sett
                  settings.colours.text);
     drawing.place(panels[std::size_t(k)].frame->picture, corner + Vec2(0.0, label));
   }
-  return Frame{image, Vec2::Zero(), Vec2(image.width(), image.height()),
-               panels.front().frame->caption};
+  Frame composed;
+  composed.picture = image;
+  composed.sceneSize = Vec2(image.width(), image.height());
+  composed.caption = panels.front().frame->caption;
+  // The scene's name, without the first panel's solver.
+  const std::string& title = panels.front().frame->title;
+  composed.title = title.substr(0, title.find("  ·  "));
+  for (const Panel& panel : panels) {
+    composed.panels.push_back(*panel.frame);
+    composed.panelLabels.push_back(panel.label);
+    addKinds(composed.drawn, panel.frame->drawn);
+  }
+  return composed;
 }
 
 }  // namespace impulse2d::render

@@ -105,6 +105,7 @@ SceneFile parseScene(std::string_view text, const std::string& sourceName) {
   scene_file::readSolver(root, scene);
   scene_file::readRender(root, scene);
   scene_file::readBodies(root, scene);
+  scene_file::checkFollowedBody(root, scene);
   if (scene.bodies.empty()) {
     throw SceneError(sourceName, 1, 1,
                      "scene has no bodies (add [[body]], [[stack]] or [[pyramid]])");
@@ -130,16 +131,34 @@ bool isSettingAssignment(const std::string& assignment) {
   return equals != std::string::npos && dot != std::string::npos && dot < equals;
 }
 
-void applySetting(Scene& scene, const std::string& assignment) {
+namespace {
+
+/// The parsed "section.key=value", its section one of `sections`.
+toml::table parseSetting(const std::string& assignment, const std::vector<std::string>& sections) {
   if (!isSettingAssignment(assignment)) {
     throw SceneError("--set", 1, 1,
                      "expected section.key=value, such as solver.velocity_iterations=12, not '" +
                          assignment + "'");
   }
-  const toml::table root = parseAssignment(assignment, assignment.find('='));
-  scene_file::rejectUnknownKeys(root, {"world", "solver"}, "--set");
+  toml::table root = parseAssignment(assignment, assignment.find('='));
+  scene_file::rejectUnknownKeys(root, sections, "--set");
+  return root;
+}
+
+}  // namespace
+
+void applySetting(Scene& scene, const std::string& assignment) {
+  const toml::table root = parseSetting(assignment, {"world", "solver"});
   scene_file::readWorld(root, scene);
   scene_file::readSolver(root, scene);
+}
+
+void applySetting(SceneFile& scene, const std::string& assignment) {
+  const toml::table root = parseSetting(assignment, {"world", "solver", "render"});
+  scene_file::readWorld(root, scene);
+  scene_file::readSolver(root, scene);
+  scene_file::readRender(root, scene);
+  scene_file::checkFollowedBody(root, scene);
 }
 
 }  // namespace impulse2d

@@ -16,6 +16,9 @@ void readSolver(const toml::table& root, Scene& scene);
 
 /// [render]: how frames look at the scene.
 void readRender(const toml::table& root, SceneFile& scene);
+/// Throws, at [render] follow, when the view follows a body the scene does not have (read the
+/// bodies first).
+void checkFollowedBody(const toml::table& root, const SceneFile& scene);
 
 /// [[body]], then [[stack]] and [[pyramid]] expanded to bodies; names must be unique.
 void readBodies(const toml::table& root, Scene& scene);

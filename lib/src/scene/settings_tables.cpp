@@ -96,10 +96,31 @@ void readSolver(const toml::table& root, Scene& scene) {
                     "[solver] for solver '" + scene.solver + "'", scene.solver);
 }
 
+namespace {
+
+/// [render] view = [[x0, y0], [x1, y1]]: the lower left and upper right corners, x0 < x1, y0 < y1.
+Aabb readWindow(const toml::node& node) {
+  const toml::array* corners = node.as_array();
+  if (!corners || corners->size() != 2) {
+    fail(node.source(),
+         "'view' must be the lower left and upper right corners [[x0, y0], [x1, y1]] in metres");
+  }
+  const Aabb window{readVec2((*corners)[0], "view"), readVec2((*corners)[1], "view")};
+  if (!(window.lower.x() < window.upper.x() && window.lower.y() < window.upper.y())) {
+    fail(node.source(),
+         "'view' must go from its lower left corner [x0, y0] to its upper right "
+         "[x1, y1], with x0 < x1 and y0 < y1");
+  }
+  return window;
+}
+
+}  // namespace
+
 void readRender(const toml::table& root, SceneFile& scene) {
   const toml::table* render = findTable(root, "render");
   if (!render) return;
-  rejectUnknownKeys(*render, {"width", "height", "centre", "scale"}, "[render]");
+  rejectUnknownKeys(*render, {"width", "height", "centre", "scale", "view", "follow", "zoom"},
+                    "[render]");
   if (const toml::node* width = render->get("width")) {
     scene.view.width = readInteger(*width, "width", 1, kMostFrameSide);
   }
@@ -114,6 +135,23 @@ void readRender(const toml::table& root, SceneFile& scene) {
   if (const toml::node* scale = render->get("scale")) {
     scene.view.scale = readNumber(*scale, "scale", Range::Positive);
   }
+  if (const toml::node* window = render->get("view")) scene.view.window = readWindow(*window);
+  if (const toml::node* follow = render->get("follow")) {
+    scene.view.follow = readString(*follow, "follow");
+  }
+  if (const toml::node* zoom = render->get("zoom")) {
+    scene.view.zoom = readNumber(*zoom, "zoom", Range::Positive);
+  }
+}
+
+void checkFollowedBody(const toml::table& root, const SceneFile& scene) {
+  if (!scene.view.follow) return;
+  for (const BodyDef& body : scene.bodies) {
+    if (body.name == *scene.view.follow) return;
+  }
+  const toml::table* render = findTable(root, "render");
+  fail(render && render->get("follow") ? render->get("follow")->source() : root.source(),
+       "the view follows body '" + *scene.view.follow + "', which the scene does not have");
 }
 
 }  // namespace impulse2d::scene_file

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -83,6 +84,8 @@ class Drawing {
   void polygon(const std::vector<Vec2>& corners, Color fill, Color outline, double outlineWidth);
   /// Filled circle, outlined `outlineWidth` wide (0: none).
   void circle(const Vec2& centre, double radius, Color fill, Color outline, double outlineWidth);
+  /// A closed polygon's outline only, `width` wide, centred on its edges.
+  void outline(const std::vector<Vec2>& corners, Color colour, double width);
   /// A circle's outline only.
   void ring(const Vec2& centre, double radius, Color colour, double width);
   /// Filled axis-aligned rectangle from its top left `corner`, no outline.
@@ -109,6 +112,9 @@ class Drawing {
   /// left corner at `corner`, scaled by `scale`.
   void placePart(const Picture& picture, const Vec2& from, const Vec2& size, const Vec2& corner,
                  double scale);
+  /// Calls `draw` with the origin moved to `corner` and the drawing clipped to `size` there: a
+  /// sheet's cell, whose scene's arrows may reach past it.
+  void inside(const Vec2& corner, const Vec2& size, const std::function<void(Drawing&)>& draw);
   /// Moves the origin of what follows by `offset` pixels.
   void translate(const Vec2& offset);
 

@@ -52,7 +52,9 @@ struct ForceScale {
 /// over its width), shared by two contact points.
 double restingForceEstimate(const std::vector<Body>& bodies, const Vec2& gravity);
 /// The scale of a run: settings.forceScale if set, else the one that draws the resting force
-/// estimate restingForceLength of the camera's height.
+/// estimate restingForceLength of the camera's height, or less: so that no body's resting
+/// contact arrows run into the next contact's, each dynamic body's column weight is drawn at most
+/// settings.contactArrowRoom of its own height (its bottom's arrows and its top's share it).
 ForceScale fitForceScale(const std::vector<Body>& bodies, const Vec2& gravity, double dt,
                          const Camera& camera, const RenderSettings& settings);
 /// How much of its friction a contact uses, |Σλt| / (μ Σλn) over its points: 0 for none, 1 on
@@ -74,6 +76,9 @@ struct DrawnKinds {
   bool highlight = false;                      ///< a trace frame's resolved contact and its impulse
   bool velocityChange = false;                 ///< a trace frame's point velocity before and after
 };
+
+/// Adds to `into` every kind `drawn` holds: what a sheet of several frames showed.
+void addKinds(DrawnKinds& into, const DrawnKinds& drawn);
 
 /// What the heads-up strip says.
 struct FrameInfo {
@@ -119,18 +124,48 @@ double drawWorldArrow(Drawing& drawing, const Camera& camera, const Vec2& at, co
                       Color color, const RenderSettings& settings, const Vec2& shift = Vec2::Zero(),
                       bool halo = true);
 
-/// A frame: its picture, where the scene area lies in it (a thumbnail shows that part alone),
-/// and the caption a thumbnail carries.
+/// Draws a frame's scene again through another camera (a sheet's cell, with its own text size),
+/// its background included; returns what it drew.
+using SceneRedraw = std::function<DrawnKinds(Drawing&, const Camera&)>;
+
+/// A frame: its picture, where the scene area lies in it, and what a sheet needs to show it in a
+/// cell of its own: its caption, its camera and force scale, and a way to draw its scene again.
 struct Frame {
   Picture picture;                  ///< the whole frame: heads-up strip, scene, legend strip
   Vec2 sceneCorner = Vec2::Zero();  ///< pixels: the scene area's top left corner
   Vec2 sceneSize = Vec2::Zero();    ///< pixels
-  std::string caption;              ///< under its thumbnail on a sheet
+  std::string caption;              ///< under its cell on a sheet
+  std::string title;                ///< the heads-up's first line: scene and solver
+  Camera camera;                    ///< of the scene area
+  ForceScale forces;                ///< the run's
+  DrawnKinds drawn;                 ///< what the scene showed, for a sheet's legend
+  /// The scene drawn again at a cell's size; empty when only the picture can show it (a trace
+  /// frame, whose highlight is drawn once), and a sheet then shrinks the picture.
+  SceneRedraw redraw;
+  /// A comparison's frame: its panels, left to right, each with its label (composePanels).
+  std::vector<Frame> panels;
+  std::vector<std::string> panelLabels;  ///< one per panel
 };
 
 /// Extra drawing over a frame's scene (a trace frame's highlight), in camera pixels; it marks
 /// what it drew in DrawnKinds so the legend names it.
 using SceneExtra = std::function<void(Drawing&, DrawnKinds&)>;
+
+/// What a frame of a simulation shows, taken as the simulation stands, so that it can be drawn
+/// once the run is over and its camera known.
+struct FrameState {
+  std::vector<Body> bodies;
+  std::vector<Manifold> manifolds;  ///< at step 0, the starting contacts (startingContacts)
+  SceneState scene;
+  std::vector<std::string> headsUp;  ///< headsUpLines
+  std::string caption;
+  Vec2 gravity = Vec2::Zero();  ///< m/s², for the force scale
+  double impulseTime = 0.0;     ///< s: a (sub)step, over which the manifolds' impulses act
+};
+
+/// The frame state of a simulation as it stands, for a scene of that name.
+FrameState captureFrame(const Simulation& simulation, const std::string& scene,
+                        const RenderSettings& settings);
 
 /// Draws frames of one camera. The picture is the frame's width × height: the heads-up strip,
 /// the scene area (the camera's), the legend strip.
@@ -142,9 +177,16 @@ class FrameRenderer {
   /// The frame of a simulation as it stands. The first call fits the run's force scale to the
   /// simulation's bodies, gravity and dt, unless fitForces was called.
   Frame draw(const Simulation& simulation);
+  /// The frame of a captured state; the first call fits the force scale to it, unless fitForces
+  /// was called.
+  Frame draw(const FrameState& state);
   /// Fits the force scale every later frame uses (fitForceScale), with the substep's length as
   /// the time an impulse acts (a world's manifolds hold its last substep's impulses).
   void fitForces(const Simulation& simulation);
+  /// The same from a captured state.
+  void fitForces(const FrameState& state);
+  /// The camera of the frames that follow (a run's camera follows a body from frame to frame).
+  void setCamera(const Camera& camera) { camera_ = camera; }
   /// The run's force scale (fitted by the first frame or fitForces).
   const ForceScale& forces() const { return forces_; }
   /// The frame of bodies and manifolds, with the heads-up lines and caption given.

@@ -76,6 +76,10 @@ struct RenderSettings {
   /// Fraction of the scene's height the largest resting contact force is drawn when the force
   /// scale is fitted: 0.15 of a 500-pixel scene is 75 pixels.
   double restingForceLength = 0.15;
+  /// At most this fraction of a dynamic body's height is the length of its column's weight when
+  /// the force scale is fitted: the arrows of its bottom contact (half the weight at each of two
+  /// points) and of its top contact then stay inside it, apart, however tall the stack.
+  double contactArrowRoom = 0.9;
   /// m per m/s. Length of a velocity arrow: a body falling at 10 m/s gets a 1 m arrow.
   double velocityScale = 0.1;
   /// Arrows longer than this fraction of the scene's height are cut to it, so one large impulse
@@ -93,8 +97,11 @@ struct RenderSettings {
   /// Length of the μN mark across a friction arrow, per text size.
   double limitMarkLength = 0.9;
 
-  double outlineWidth = 1.0;       ///< pixels, of bodies
-  double rotationMarkWidth = 1.5;  ///< pixels
+  /// Bodies' outlines, per text size (1.5 pixels in a 600-pixel frame, 2.7 in 1080), drawn over
+  /// every body's fill so that touching bodies each keep their edge.
+  double outlineWidth = 0.1;
+  double swatchOutlineWidth = 1.0;  ///< pixels, of the legend's swatches and gauges' rims
+  double rotationMarkWidth = 1.5;   ///< pixels
   /// The rotation mark runs from the centre towards the body's edge, at most this many text
   /// sizes long.
   double rotationMarkLength = 1.5;
@@ -138,14 +145,16 @@ struct RenderSettings {
   /// of their extent: a 1 km ground under a 20 m pyramid shows as the pyramid's floor.
   double staticFitReach = 0.25;
 
-  /// Contact sheet: this many thumbnails, first and last included, 4 to a row.
+  /// Contact sheet: at most this many cells, first and last frame included, evenly spaced: as
+  /// many as space them exactly, down to two thirds of this. A comparison's cell holds all its
+  /// panels side by side, so its sheet has this many panels, in fewer cells.
   int sheetThumbnails = 12;
-  int sheetColumns = 4;  ///< thumbnails to a row
-  /// Thumbnail width (pixels); its caption's text is minimumTextSize, sized for the thumbnail.
-  int sheetThumbnailWidth = 320;
-  /// Thumbnails are at least this fraction of the scene's width, so a comparison's grid of
-  /// panels reads on its sheet; the sheet then has fewer columns.
-  double sheetThumbnailScale = 0.3;
+  /// Width of a sheet's scene (pixels): a cell, or one panel of a comparison's cell. The scene is
+  /// drawn again at this size, not shrunk, so its text and arrows keep sheetTextSize.
+  int sheetCellWidth = 480;
+  /// Font size (pixels) of a sheet's captions, title, legend and scenes: readable at 100 % on a
+  /// slide and on an A4 page.
+  double sheetTextSize = 14.0;
   /// Comparison panels are laid out in the grid whose whole image is nearest this aspect ratio
   /// (a 16:9 slide).
   double slideAspect = 16.0 / 9.0;

@@ -66,6 +66,9 @@ bool isSettingAssignment(const std::string& assignment);
 /// with the value written as in a scene file; a bare word counts as a string (world.solver=micro).
 /// Errors are SceneErrors located in the assignment, named "--set".
 void applySetting(Scene& scene, const std::string& assignment);
+/// The same for a scene file, whose [render] table a "render.key=value" changes too
+/// (render.scale=300, render.follow=box).
+void applySetting(SceneFile& scene, const std::string& assignment);
 
 /// Throws SceneError(sourceName, ...) when the run the scene asks for is too long to finish in
 /// reasonable time: steps × dynamic bodies × substeps above kMostBodySteps (setting_ranges.h).
