@@ -2,8 +2,10 @@
 // docs/tutorial.md, docs/rendering.md or a demo scene's header comment that says where a body
 // gets, how fast, when or with what energy is found on its page (by the phrase that states it, so
 // a reworded page fails here instead of going unchecked) and compared with the run, to the
-// rounding the page prints it with. A failure names the page, the line and both numbers: when a
-// default changes the run, the page's figure shows up here.
+// rounding the page prints it with ("about" widens it, by a stated tolerance). A failure names
+// the page, the line and both numbers: when a default changes the run, the page's figure shows up
+// here. The trace lines the pages quote must be what a trace draws, and rendering.md's gnuplot
+// line must plot friction equal to the push until it gives way.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -263,10 +265,11 @@ TEST_CASE("tutorial: the energies of the first scene after 3 s", "[docs][tutoria
   checkFigure(page, "J kinetic, {−7.45} J potential", potentialEnergy(*world));
 }
 
-TEST_CASE("tutorial: the trace frame's heads-up lines are the trace's", "[docs][tutorial][trace]") {
-  // The page quotes the heads-up lines of the resting box's first event in step 13; the trace
-  // draws them (its subscripts written λ_n, which the page prints as λn).
-  const SceneFile scene = demoScene("resting_box.toml");
+namespace {
+
+/// The heads-up text of every frame of a demo's traced step, one line each, subscripts' '_'
+/// dropped as the pages print them.
+std::string tracedText(const SceneFile& scene, long step) {
   std::unique_ptr<World> world = buildWorld(scene);
   render::RenderSettings settings;
   render::FrameRenderer renderer(render::fitCamera(world->bodies(), ViewDef{}, settings),
@@ -274,14 +277,30 @@ TEST_CASE("tutorial: the trace frame's heads-up lines are the trace's", "[docs][
   render::DrawingLog log;
   renderer.setLog(&log);
   const i2d_process::Scratch scratch;
-  render::traceStep(*world, 13, renderer, scratch.path);
+  render::traceStep(*world, step, renderer, scratch.path);
   std::string drawn;
   for (const render::DrawnShape& shape : log) {
-    if (shape.kind != render::DrawnShape::Kind::Text) continue;
+    if (shape.kind != render::DrawnShape::Kind::Text || shape.role != "heads-up") continue;
     std::string text = shape.text;
     for (std::size_t at; (at = text.find('_')) != std::string::npos;) text.erase(at, 1);
     drawn += text + "\n";
   }
+  return drawn;
+}
+
+/// Checks that the page says `phrase` and the trace drew `drawn` (a closing speed line's part).
+void checkTraced(const Page& page, const std::string& phrase, const std::string& trace,
+                 const std::string& drawn) {
+  INFO(page.path << " says \"" << phrase << "\"; the trace draws:\n" << trace);
+  CHECK(page.text.find(phrase) != std::string::npos);
+  CHECK(trace.find(drawn) != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("tutorial: the trace frame's heads-up lines are the trace's", "[docs][tutorial][trace]") {
+  // The page quotes the heads-up lines of the resting box's first event in step 13.
+  const std::string drawn = tracedText(demoScene("resting_box.toml"), 13);
   std::istringstream quoted(
       doc_blocks::namedBlock(doc_blocks::readBlocks("docs/tutorial.md"), "trace"));
   int lines = 0;
@@ -341,39 +360,6 @@ TEST_CASE("rendering.md's gnuplot line plots the push and friction of pushed_box
     CHECK(friction[i].second == Approx(std::min(push[i].second, 4.905)).margin(1e-3));
   }
 }
-
-namespace {
-
-/// The heads-up text of every frame of a demo's traced step, one line each, subscripts' '_'
-/// dropped as the pages print them.
-std::string tracedText(const SceneFile& scene, long step) {
-  std::unique_ptr<World> world = buildWorld(scene);
-  render::RenderSettings settings;
-  render::FrameRenderer renderer(render::fitCamera(world->bodies(), ViewDef{}, settings),
-                                 scene.name, settings);
-  render::DrawingLog log;
-  renderer.setLog(&log);
-  const i2d_process::Scratch scratch;
-  render::traceStep(*world, step, renderer, scratch.path);
-  std::string drawn;
-  for (const render::DrawnShape& shape : log) {
-    if (shape.kind != render::DrawnShape::Kind::Text || shape.role != "heads-up") continue;
-    std::string text = shape.text;
-    for (std::size_t at; (at = text.find('_')) != std::string::npos;) text.erase(at, 1);
-    drawn += text + "\n";
-  }
-  return drawn;
-}
-
-/// Checks that the page says `phrase` and the trace drew `drawn` (a closing speed line's part).
-void checkTraced(const Page& page, const std::string& phrase, const std::string& trace,
-                 const std::string& drawn) {
-  INFO(page.path << " says \"" << phrase << "\"; the trace draws:\n" << trace);
-  CHECK(page.text.find(phrase) != std::string::npos);
-  CHECK(trace.find(drawn) != std::string::npos);
-}
-
-}  // namespace
 
 TEST_CASE("demos.md's traced steps: the closing speeds each frame shows", "[docs][trace]") {
   const Page page = readPage("docs/demos.md");
