@@ -179,27 +179,55 @@ TEST_CASE("spinning disk: it rolls on at ω₀r/3", "[docs][friction]") {
   checkFigure(header, "v = {2.5} m/s", disk.velocity.x());
 }
 
-TEST_CASE("bouncing ball: the first apex and the energy at the end", "[docs][restitution]") {
+TEST_CASE("bouncing ball: the apexes and the energy at the end", "[docs][restitution]") {
   const SceneFile scene = demoScene("bouncing_ball.toml");
-  // The first apex: the highest the ball's bottom gets between leaving the ground after its first
-  // bounce and touching it again.
+  // Each apex: the highest the ball's bottom gets between leaving the ground and touching it
+  // again.
   std::unique_ptr<World> world = buildWorld(scene);
   const double radius = world->bodies().back().shape.radius;
-  enum class Phase { Falling, Bouncing, Rising } phase = Phase::Falling;
-  double apex = 0.0;
-  while (world->stepCount() < scene.steps) {
+  std::vector<double> apexes;
+  bool wasTouching = false;
+  bool touched = false;
+  while (world->stepCount() < scene.steps && apexes.size() < 4) {
     world->step();
     const bool touching = contactPointCount(*world) > 0;
-    if (phase == Phase::Falling && touching) phase = Phase::Bouncing;
-    if (phase == Phase::Bouncing && !touching) phase = Phase::Rising;
-    if (phase == Phase::Rising && touching) break;
-    if (phase == Phase::Rising) apex = std::max(apex, world->bodies().back().position.y() - radius);
+    touched = touched || touching;
+    if (touched && wasTouching && !touching) apexes.push_back(0.0);
+    if (!touching && !apexes.empty()) {
+      apexes.back() = std::max(apexes.back(), world->bodies().back().position.y() - radius);
+    }
+    wasTouching = touching;
   }
+  REQUIRE(apexes.size() >= 3);
   const Page demos = readPage("docs/demos.md");
-  checkFigure(demos, "rises to about e²h = {1.28} m", apex, 0.02);
-  checkFigure(readPage("demos/scenes/bouncing_ball.toml"), "rises to e^2 h: {1.28} m", apex, 0.02);
+  const Page header = readPage("demos/scenes/bouncing_ball.toml");
+  checkFigure(demos, "rises to about e²h = {1.28} m", apexes[0], 0.02);
+  checkFigure(header, "rises to e^2 h: {1.28} m", apexes[0], 0.02);
+  checkFigure(header, "1.28 m here, then {0.82} m", apexes[1], 0.02);
+  checkFigure(header, "then 0.82 m, {0.52} m", apexes[2], 0.02);
   checkFigure(demos, "E = {3.91} J at step 330", totalEnergy(*runFor(scene, 330)));
   checkFigure(demos, "(purple, E = {3.87} J)", totalEnergy(*runFor(scene, scene.steps)));
+}
+
+TEST_CASE("resting box and spinning disk: the colour a page says a body has at a step",
+          "[docs][render]") {
+  // The colour is the body's state (render::classifyBodies), drawn from the world at that step.
+  const auto stateAt = [](const SceneFile& scene, long step) {
+    const std::unique_ptr<World> world = runFor(scene, step);
+    return render::classifyBodies(world->bodies(), world->manifolds(), render::RenderSettings{})
+        .back();
+  };
+  const Page page = readPage("docs/demos.md");
+  const SceneFile resting = demoScene("resting_box.toml");
+  CHECK(page.text.find("restitution 0.5 (purple, step 25), and from about step 50 is green") !=
+        std::string::npos);
+  CHECK(stateAt(resting, 25) == render::BodyState::Touching);
+  for (long step = 55; step <= 300; step += 5) {
+    INFO("docs/demos.md: the resting box is green from about step 50; at step " << step);
+    CHECK(stateAt(resting, step) == render::BodyState::Resting);
+  }
+  CHECK(page.text.find("lands and slips (orange at step 30:") != std::string::npos);
+  CHECK(stateAt(demoScene("spinning_disk.toml"), 30) == render::BodyState::Sliding);
 }
 
 TEST_CASE("resting box and cradle: the energy and speeds at the end", "[docs]") {
