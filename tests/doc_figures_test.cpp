@@ -2,8 +2,10 @@
 // docs/tutorial.md, docs/rendering.md or a demo scene's header comment that says where a body
 // gets, how fast, when or with what energy is found on its page (by the phrase that states it, so
 // a reworded page fails here instead of going unchecked) and compared with the run, to the
-// rounding the page prints it with. A failure names the page, the line and both numbers: when a
-// default changes the run, the page's figure shows up here.
+// rounding the page prints it with ("about" widens it, by a stated tolerance). A failure names
+// the page, the line and both numbers: when a default changes the run, the page's figure shows up
+// here. The trace lines the pages quote must be what a trace draws, and rendering.md's gnuplot
+// line must plot friction equal to the push until it gives way.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -177,27 +179,55 @@ TEST_CASE("spinning disk: it rolls on at ω₀r/3", "[docs][friction]") {
   checkFigure(header, "v = {2.5} m/s", disk.velocity.x());
 }
 
-TEST_CASE("bouncing ball: the first apex and the energy at the end", "[docs][restitution]") {
+TEST_CASE("bouncing ball: the apexes and the energy at the end", "[docs][restitution]") {
   const SceneFile scene = demoScene("bouncing_ball.toml");
-  // The first apex: the highest the ball's bottom gets between leaving the ground after its first
-  // bounce and touching it again.
+  // Each apex: the highest the ball's bottom gets between leaving the ground and touching it
+  // again.
   std::unique_ptr<World> world = buildWorld(scene);
   const double radius = world->bodies().back().shape.radius;
-  enum class Phase { Falling, Bouncing, Rising } phase = Phase::Falling;
-  double apex = 0.0;
-  while (world->stepCount() < scene.steps) {
+  std::vector<double> apexes;
+  bool wasTouching = false;
+  bool touched = false;
+  while (world->stepCount() < scene.steps && apexes.size() < 4) {
     world->step();
     const bool touching = contactPointCount(*world) > 0;
-    if (phase == Phase::Falling && touching) phase = Phase::Bouncing;
-    if (phase == Phase::Bouncing && !touching) phase = Phase::Rising;
-    if (phase == Phase::Rising && touching) break;
-    if (phase == Phase::Rising) apex = std::max(apex, world->bodies().back().position.y() - radius);
+    touched = touched || touching;
+    if (touched && wasTouching && !touching) apexes.push_back(0.0);
+    if (!touching && !apexes.empty()) {
+      apexes.back() = std::max(apexes.back(), world->bodies().back().position.y() - radius);
+    }
+    wasTouching = touching;
   }
+  REQUIRE(apexes.size() >= 3);
   const Page demos = readPage("docs/demos.md");
-  checkFigure(demos, "rises to about e²h = {1.28} m", apex, 0.02);
-  checkFigure(readPage("demos/scenes/bouncing_ball.toml"), "rises to e^2 h: {1.28} m", apex, 0.02);
+  const Page header = readPage("demos/scenes/bouncing_ball.toml");
+  checkFigure(demos, "rises to about e²h = {1.28} m", apexes[0], 0.02);
+  checkFigure(header, "rises to e^2 h: {1.28} m", apexes[0], 0.02);
+  checkFigure(header, "1.28 m here, then {0.82} m", apexes[1], 0.02);
+  checkFigure(header, "then 0.82 m, {0.52} m", apexes[2], 0.02);
   checkFigure(demos, "E = {3.91} J at step 330", totalEnergy(*runFor(scene, 330)));
   checkFigure(demos, "(purple, E = {3.87} J)", totalEnergy(*runFor(scene, scene.steps)));
+}
+
+TEST_CASE("resting box and spinning disk: the colour a page says a body has at a step",
+          "[docs][render]") {
+  // The colour is the body's state (render::classifyBodies), drawn from the world at that step.
+  const auto stateAt = [](const SceneFile& scene, long step) {
+    const std::unique_ptr<World> world = runFor(scene, step);
+    return render::classifyBodies(world->bodies(), world->manifolds(), render::RenderSettings{})
+        .back();
+  };
+  const Page page = readPage("docs/demos.md");
+  const SceneFile resting = demoScene("resting_box.toml");
+  CHECK(page.text.find("restitution 0.5 (purple, step 25), and from about step 50 is green") !=
+        std::string::npos);
+  CHECK(stateAt(resting, 25) == render::BodyState::Touching);
+  for (long step = 55; step <= 300; step += 5) {
+    INFO("docs/demos.md: the resting box is green from about step 50; at step " << step);
+    CHECK(stateAt(resting, step) == render::BodyState::Resting);
+  }
+  CHECK(page.text.find("lands and slips (orange at step 30:") != std::string::npos);
+  CHECK(stateAt(demoScene("spinning_disk.toml"), 30) == render::BodyState::Sliding);
 }
 
 TEST_CASE("resting box and cradle: the energy and speeds at the end", "[docs]") {
@@ -263,10 +293,11 @@ TEST_CASE("tutorial: the energies of the first scene after 3 s", "[docs][tutoria
   checkFigure(page, "J kinetic, {−7.45} J potential", potentialEnergy(*world));
 }
 
-TEST_CASE("tutorial: the trace frame's heads-up lines are the trace's", "[docs][tutorial][trace]") {
-  // The page quotes the heads-up lines of the resting box's first event in step 13; the trace
-  // draws them (its subscripts written λ_n, which the page prints as λn).
-  const SceneFile scene = demoScene("resting_box.toml");
+namespace {
+
+/// The heads-up text of every frame of a demo's traced step, one line each, subscripts' '_'
+/// dropped as the pages print them.
+std::string tracedText(const SceneFile& scene, long step) {
   std::unique_ptr<World> world = buildWorld(scene);
   render::RenderSettings settings;
   render::FrameRenderer renderer(render::fitCamera(world->bodies(), ViewDef{}, settings),
@@ -274,14 +305,30 @@ TEST_CASE("tutorial: the trace frame's heads-up lines are the trace's", "[docs][
   render::DrawingLog log;
   renderer.setLog(&log);
   const i2d_process::Scratch scratch;
-  render::traceStep(*world, 13, renderer, scratch.path);
+  render::traceStep(*world, step, renderer, scratch.path);
   std::string drawn;
   for (const render::DrawnShape& shape : log) {
-    if (shape.kind != render::DrawnShape::Kind::Text) continue;
+    if (shape.kind != render::DrawnShape::Kind::Text || shape.role != "heads-up") continue;
     std::string text = shape.text;
     for (std::size_t at; (at = text.find('_')) != std::string::npos;) text.erase(at, 1);
     drawn += text + "\n";
   }
+  return drawn;
+}
+
+/// Checks that the page says `phrase` and the trace drew `drawn` (a closing speed line's part).
+void checkTraced(const Page& page, const std::string& phrase, const std::string& trace,
+                 const std::string& drawn) {
+  INFO(page.path << " says \"" << phrase << "\"; the trace draws:\n" << trace);
+  CHECK(page.text.find(phrase) != std::string::npos);
+  CHECK(trace.find(drawn) != std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("tutorial: the trace frame's heads-up lines are the trace's", "[docs][tutorial][trace]") {
+  // The page quotes the heads-up lines of the resting box's first event in step 13.
+  const std::string drawn = tracedText(demoScene("resting_box.toml"), 13);
   std::istringstream quoted(
       doc_blocks::namedBlock(doc_blocks::readBlocks("docs/tutorial.md"), "trace"));
   int lines = 0;
@@ -341,39 +388,6 @@ TEST_CASE("rendering.md's gnuplot line plots the push and friction of pushed_box
     CHECK(friction[i].second == Approx(std::min(push[i].second, 4.905)).margin(1e-3));
   }
 }
-
-namespace {
-
-/// The heads-up text of every frame of a demo's traced step, one line each, subscripts' '_'
-/// dropped as the pages print them.
-std::string tracedText(const SceneFile& scene, long step) {
-  std::unique_ptr<World> world = buildWorld(scene);
-  render::RenderSettings settings;
-  render::FrameRenderer renderer(render::fitCamera(world->bodies(), ViewDef{}, settings),
-                                 scene.name, settings);
-  render::DrawingLog log;
-  renderer.setLog(&log);
-  const i2d_process::Scratch scratch;
-  render::traceStep(*world, step, renderer, scratch.path);
-  std::string drawn;
-  for (const render::DrawnShape& shape : log) {
-    if (shape.kind != render::DrawnShape::Kind::Text || shape.role != "heads-up") continue;
-    std::string text = shape.text;
-    for (std::size_t at; (at = text.find('_')) != std::string::npos;) text.erase(at, 1);
-    drawn += text + "\n";
-  }
-  return drawn;
-}
-
-/// Checks that the page says `phrase` and the trace drew `drawn` (a closing speed line's part).
-void checkTraced(const Page& page, const std::string& phrase, const std::string& trace,
-                 const std::string& drawn) {
-  INFO(page.path << " says \"" << phrase << "\"; the trace draws:\n" << trace);
-  CHECK(page.text.find(phrase) != std::string::npos);
-  CHECK(trace.find(drawn) != std::string::npos);
-}
-
-}  // namespace
 
 TEST_CASE("demos.md's traced steps: the closing speeds each frame shows", "[docs][trace]") {
   const Page page = readPage("docs/demos.md");
