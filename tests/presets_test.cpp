@@ -3,6 +3,9 @@
 // alone and holds a 40-row pyramid at 8 + 3 iterations; Box2D-Lite does not bounce.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <limits>
+
 #include "impulse2d/presets.h"
 #include "impulse2d/world.h"
 #include "solver_scenes.h"
@@ -29,15 +32,19 @@ Scene overlappingBox(double overlap) {
   return scene;
 }
 
-/// m. The largest distance any box moved between `settle` and `end` seconds.
-double settledDrift(const Scene& scene, double settle, double end) {
+/// m. The largest distance any box moved between `settle` and `end` seconds; looked at once a
+/// second, the run stops early once that passes `enough`.
+double settledDrift(const Scene& scene, double settle, double end,
+                    double enough = std::numeric_limits<double>::infinity()) {
   auto world = buildWorld(scene);
   runSteps(*world, stepsIn(settle));
   const std::vector<Body> settled = world->bodies();
-  runSteps(*world, stepsIn(end - settle));
   double drift = 0.0;
-  for (size_t i = 0; i < settled.size(); ++i) {
-    drift = std::max(drift, (world->bodies()[i].position - settled[i].position).norm());
+  for (double time = settle; time < end && drift <= enough; time += 1.0) {
+    runSteps(*world, stepsIn(std::min(1.0, end - time)));
+    for (size_t i = 0; i < settled.size(); ++i) {
+      drift = std::max(drift, (world->bodies()[i].position - settled[i].position).norm());
+    }
   }
   return drift;
 }
@@ -89,7 +96,7 @@ TEST_CASE("box2d_2_4 holds a 40-row pyramid at 8 + 3 iterations; with the veloci
   CHECK(drift < 0.45);
   Scene biased = box2d;
   biased.solverSettings.sequential.targets.penetrationBias = true;
-  const double biasedDrift = settledDrift(biased, 1.0, 10.0);
+  const double biasedDrift = settledDrift(biased, 1.0, 10.0, 1.0);
   INFO("biased drift " << biasedDrift);
   CHECK(biasedDrift > 1.0);
 }
