@@ -96,7 +96,7 @@ std::vector<int> evenlySpaced(int frameCount, int count) {
   if (shown == 1) return {0};
   if (frameCount > count) {
     // Exactly even when some count not far under the one asked for splits the frames.
-    for (int n = count; n >= std::max(2, (2 * count + 2) / 3); --n) {
+    for (int n = count; n >= std::max(2, count / 2 + 1); --n) {
       if ((frameCount - 1) % (n - 1) != 0) continue;
       for (int k = 0; k < n; ++k) indices.push_back(k * ((frameCount - 1) / (n - 1)));
       return indices;

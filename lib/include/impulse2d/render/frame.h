@@ -53,8 +53,9 @@ struct ForceScale {
 double restingForceEstimate(const std::vector<Body>& bodies, const Vec2& gravity);
 /// The scale of a run: settings.forceScale if set, else the one that draws the resting force
 /// estimate restingForceLength of the camera's height, or less: so that no body's resting
-/// contact arrows run into the next contact's, each dynamic body's column weight is drawn at most
-/// settings.contactArrowRoom of its own height (its bottom's arrows and its top's share it).
+/// contact arrows run into the next contact's, half the column weight of each dynamic body
+/// another rests on (the force at each of its two bottom points) is drawn at most
+/// settings.contactArrowRoom of its own height.
 ForceScale fitForceScale(const std::vector<Body>& bodies, const Vec2& gravity, double dt,
                          const Camera& camera, const RenderSettings& settings);
 /// How much of its friction a contact uses, |Σλt| / (μ Σλn) over its points: 0 for none, 1 on
