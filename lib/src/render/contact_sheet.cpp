@@ -84,6 +84,12 @@ DrawnKinds drawCell(Drawing& drawing, const SheetLayout& layout, int k, const Fr
   drawing.setRole("caption");
   drawBar(drawing, corner + Vec2(0.0, layout.thumbnailHeight),
           Vec2(layout.cellWidth(), layout.labelHeight), frame.caption, settings);
+  // A rim round the cell: on the print theme's white page the cells would run together.
+  const Vec2 top = corner - Vec2(0.0, layout.panelLabelHeight);
+  const Vec2 size(layout.cellWidth(), layout.cellHeight());
+  drawing.setRole("cell rim");
+  drawing.outline({top, top + Vec2(size.x(), 0.0), top + size, top + Vec2(0.0, size.y())},
+                  settings.colours.outline, settings.swatchOutlineWidth);
   return drawn;
 }
 
