@@ -463,7 +463,8 @@ std::vector<std::string> headsUpLines(const FrameInfo& info) {
 
 std::string caption(const FrameInfo& info) {
   char text[96];
-  std::snprintf(text, sizeof text, "step %ld   t = %.2f s", info.step, info.time);
+  std::snprintf(text, sizeof text, "step %ld   t = %.2f s   E = %.2f J", info.step, info.time,
+                info.energy);
   return text;
 }
 

@@ -96,7 +96,7 @@ FrameInfo describe(const Simulation& simulation, const std::string& scene);
 double totalEnergy(const std::vector<Body>& bodies, const Vec2& gravity);
 /// {"scene · solver", "step 120   t = 2.000 s   E = 1234.5 J"}.
 std::vector<std::string> headsUpLines(const FrameInfo& info);
-/// "step 120  t = 2.00 s": a thumbnail's caption.
+/// "step 120   t = 2.00 s   E = 490.37 J": a sheet cell's caption, the heads-up's second line.
 std::string caption(const FrameInfo& info);
 
 /// The contacts of bodies set down before any step: pairs whose surfaces are within
