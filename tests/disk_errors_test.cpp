@@ -42,7 +42,10 @@ Image greyImage() {
 
 /// A frame whose picture is one grey rectangle.
 Frame greyFrame() {
-  Frame frame{Picture(64, 48), Vec2::Zero(), Vec2(64.0, 48.0), "grey"};
+  Frame frame;
+  frame.picture = Picture(64, 48);
+  frame.sceneSize = Vec2(64.0, 48.0);
+  frame.caption = "grey";
   Drawing(frame.picture).rectangle(Vec2::Zero(), Vec2(64.0, 48.0), Color{128, 128, 128, 255});
   return frame;
 }

@@ -97,6 +97,8 @@ TEST_CASE("The contact sheet shows evenly spaced frames, first and last, in a gr
   const std::vector<int> exact = evenlySpaced(61, 12);
   REQUIRE(exact.size() == 11);
   for (std::size_t k = 0; k < exact.size(); ++k) CHECK(exact[k] == 6 * int(k));
+  // 13 frames: 12 by rounding would skip one (a gap of 2 among gaps of 1); 7 are every 2nd.
+  CHECK(evenlySpaced(13, 12) == std::vector<int>{0, 2, 4, 6, 8, 10, 12});
 
   // Cells of a 4:3 scene, 480 pixels wide: 4 × 3 of them are nearest a 16:9 slide.
   const SheetLayout layout = contactSheetLayout(evenlySpaced(30, 12), 160, 120, settings);

@@ -67,10 +67,11 @@ options (a value follows the option or '=': --steps 100, --steps=100):
   --steps N             number of steps (N >= 0) instead of [world] steps
   --dt S                time step in seconds (S > 0) instead of [world] dt
   --set SECTION.KEY=VALUE
-                        change one setting as a scene file would, SECTION world or solver
-                        (the solver's own settings); repeatable, applied in order after
-                        --solver, e.g. --set solver.velocity_iterations=20
-                        --set world.gravity=[0,-1.62]; a bare word is a string
+                        change one setting as a scene file would, SECTION world, solver
+                        (the solver's own settings) or render (the view); repeatable,
+                        applied in order after --solver, e.g. --set
+                        solver.velocity_iterations=20 --set world.gravity=[0,-1.62]
+                        --set render.follow=box; a bare word is a string
   --csv FILE            write the trajectory; FILE appears only when complete; - or
                         /dev/stdout is standard output, a device or pipe is written in place
   --contacts FILE       write every contact point's forces per recorded step: bodies, point,

@@ -84,6 +84,12 @@ DrawnKinds drawCell(Drawing& drawing, const SheetLayout& layout, int k, const Fr
   drawing.setRole("caption");
   drawBar(drawing, corner + Vec2(0.0, layout.thumbnailHeight),
           Vec2(layout.cellWidth(), layout.labelHeight), frame.caption, settings);
+  // A rim round the cell: on the print theme's white page the cells would run together.
+  const Vec2 top = corner - Vec2(0.0, layout.panelLabelHeight);
+  const Vec2 size(layout.cellWidth(), layout.cellHeight());
+  drawing.setRole("cell rim");
+  drawing.outline({top, top + Vec2(size.x(), 0.0), top + size, top + Vec2(0.0, size.y())},
+                  settings.colours.outline, settings.swatchOutlineWidth);
   return drawn;
 }
 
@@ -96,7 +102,7 @@ std::vector<int> evenlySpaced(int frameCount, int count) {
   if (shown == 1) return {0};
   if (frameCount > count) {
     // Exactly even when some count not far under the one asked for splits the frames.
-    for (int n = count; n >= std::max(2, (2 * count + 2) / 3); --n) {
+    for (int n = count; n >= std::max(2, count / 2 + 1); --n) {
       if ((frameCount - 1) % (n - 1) != 0) continue;
       for (int k = 0; k < n; ++k) indices.push_back(k * ((frameCount - 1) / (n - 1)));
       return indices;

@@ -281,15 +281,17 @@ void drawLoads(Drawing& drawing, const Camera& camera, const std::vector<Body>& 
 }
 
 /// The weight (N) of the dynamic bodies standing on `base`: those whose centre is above its
-/// bottom and within its width, itself included.
+/// bottom, each by the share of its width over the base's (a pyramid's box rests half on each of
+/// two below it), itself included.
 double columnWeight(const std::vector<Body>& bodies, const Body& base, double gravity) {
   double weight = 0.0;
   for (const Body& body : bodies) {
     if (body.isStatic() || body.position.y() < base.bounds.lower.y()) continue;
-    if (body.position.x() < base.bounds.lower.x() || body.position.x() > base.bounds.upper.x()) {
-      continue;
-    }
-    weight += body.mass * gravity;
+    const double width = body.bounds.upper.x() - body.bounds.lower.x();
+    const double over = std::min(body.bounds.upper.x(), base.bounds.upper.x()) -
+                        std::max(body.bounds.lower.x(), base.bounds.lower.x());
+    if (over <= 0.0) continue;
+    weight += body.mass * gravity * (width > 0.0 ? std::min(1.0, over / width) : 1.0);
   }
   return weight;
 }
@@ -375,14 +377,17 @@ ForceScale fitForceScale(const std::vector<Body>& bodies, const Vec2& gravity, d
   const double force = restingForceEstimate(bodies, gravity);
   const double length = settings.restingForceLength * camera.height / camera.scale;  // m
   forces.metresPerNewton = force > 0.0 ? length / force : length;  // weightless: 1 N is `length`
-  // The room each body's arrows have: its column's weight within contactArrowRoom of its height.
+  // The room each body's arrows have where another rests on it: a contact's arrows point into
+  // one of its two bodies, so each of the two points carrying a column's weight is drawn within
+  // contactArrowRoom of that body's height. A body with nothing on it has open space above.
   for (const Body& body : bodies) {
     if (body.isStatic()) continue;
+    const double own = body.mass * gravity.norm();
     const double weight = columnWeight(bodies, body, gravity.norm());
     const double height = body.bounds.upper.y() - body.bounds.lower.y();
-    if (weight > 0.0 && height > 0.0) {
+    if (weight > own * (1.0 + 1e-9) && height > 0.0) {
       forces.metresPerNewton =
-          std::min(forces.metresPerNewton, settings.contactArrowRoom * height / weight);
+          std::min(forces.metresPerNewton, settings.contactArrowRoom * height / (0.5 * weight));
     }
   }
   return forces;
@@ -458,7 +463,8 @@ std::vector<std::string> headsUpLines(const FrameInfo& info) {
 
 std::string caption(const FrameInfo& info) {
   char text[96];
-  std::snprintf(text, sizeof text, "step %ld   t = %.2f s", info.step, info.time);
+  std::snprintf(text, sizeof text, "step %ld   t = %.2f s   E = %.2f J", info.step, info.time,
+                info.energy);
   return text;
 }
 

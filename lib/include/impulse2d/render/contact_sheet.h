@@ -48,7 +48,7 @@ struct SheetLayout {
 };
 
 /// The indices of at most `count` frames of frameCount, evenly spaced, first and last included
-/// (all frames when there are no more than `count`): the most, down to two thirds of `count`,
+/// (all frames when there are no more than `count`): the most, down to half `count` and one,
 /// whose steps split the run exactly, else `count` steps apart as evenly as rounding allows.
 std::vector<int> evenlySpaced(int frameCount, int count);
 

@@ -53,8 +53,9 @@ struct ForceScale {
 double restingForceEstimate(const std::vector<Body>& bodies, const Vec2& gravity);
 /// The scale of a run: settings.forceScale if set, else the one that draws the resting force
 /// estimate restingForceLength of the camera's height, or less: so that no body's resting
-/// contact arrows run into the next contact's, each dynamic body's column weight is drawn at most
-/// settings.contactArrowRoom of its own height (its bottom's arrows and its top's share it).
+/// contact arrows run into the next contact's, half the column weight of each dynamic body
+/// another rests on (the force at each of its two bottom points) is drawn at most
+/// settings.contactArrowRoom of its own height.
 ForceScale fitForceScale(const std::vector<Body>& bodies, const Vec2& gravity, double dt,
                          const Camera& camera, const RenderSettings& settings);
 /// How much of its friction a contact uses, |Σλt| / (μ Σλn) over its points: 0 for none, 1 on
@@ -95,7 +96,7 @@ FrameInfo describe(const Simulation& simulation, const std::string& scene);
 double totalEnergy(const std::vector<Body>& bodies, const Vec2& gravity);
 /// {"scene · solver", "step 120   t = 2.000 s   E = 1234.5 J"}.
 std::vector<std::string> headsUpLines(const FrameInfo& info);
-/// "step 120  t = 2.00 s": a thumbnail's caption.
+/// "step 120   t = 2.00 s   E = 490.37 J": a sheet cell's caption, the heads-up's second line.
 std::string caption(const FrameInfo& info);
 
 /// The contacts of bodies set down before any step: pairs whose surfaces are within

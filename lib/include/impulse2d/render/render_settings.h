@@ -76,9 +76,9 @@ struct RenderSettings {
   /// Fraction of the scene's height the largest resting contact force is drawn when the force
   /// scale is fitted: 0.15 of a 500-pixel scene is 75 pixels.
   double restingForceLength = 0.15;
-  /// At most this fraction of a dynamic body's height is the length of its column's weight when
-  /// the force scale is fitted: the arrows of its bottom contact (half the weight at each of two
-  /// points) and of its top contact then stay inside it, apart, however tall the stack.
+  /// When the force scale is fitted, a dynamic body another rests on has its column's weight,
+  /// shared by two contact points, drawn at most this fraction of its height: the arrows of its
+  /// bottom contact end short of its top contact's, however tall the stack.
   double contactArrowRoom = 0.9;
   /// m per m/s. Length of a velocity arrow: a body falling at 10 m/s gets a 1 m arrow.
   double velocityScale = 0.1;
@@ -146,7 +146,7 @@ struct RenderSettings {
   double staticFitReach = 0.25;
 
   /// Contact sheet: at most this many cells, first and last frame included, evenly spaced: as
-  /// many as space them exactly, down to two thirds of this. A comparison's cell holds all its
+  /// many as space them exactly, down to half this and one. A comparison's cell holds all its
   /// panels side by side, so its sheet has this many panels, in fewer cells.
   int sheetThumbnails = 12;
   /// Width of a sheet's scene (pixels): a cell, or one panel of a comparison's cell. The scene is
