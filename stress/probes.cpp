@@ -16,7 +16,7 @@ void DisplacementProbe::observe(const Simulation& simulation) {
   }
   for (size_t i = 0; i < bodies.size(); ++i) {
     if (bodies[i].isStatic()) continue;
-    largest_ = std::max(largest_, (bodies[i].position - start_[i]).norm());
+    largest_ = std::max(largest_, std::abs(bodies[i].position.x() - start_[i].x()));
   }
 }
 
@@ -110,7 +110,7 @@ void StructureWatch::observe(const Simulation& simulation) {
   double displacement = 0.0;
   for (size_t i = 0; i < bodies.size(); ++i) {
     if (!bodies[i].isStatic())
-      displacement = std::max(displacement, (bodies[i].position - start_[i]).norm());
+      displacement = std::max(displacement, std::abs(bodies[i].position.x() - start_[i].x()));
   }
   displacement_ = windowStarted_ ? std::max(displacement_, displacement) : displacement;
   energy_ = windowStarted_ ? std::max(energy_, energy / weight_) : energy / weight_;

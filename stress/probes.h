@@ -10,8 +10,10 @@
 
 namespace impulse2d::stress {
 
-/// m. Largest distance of any dynamic body from where it was at step `from`, over the rest of
-/// the run: how far a body moved after settling.
+/// m. Largest sideways distance of any dynamic body from where it was at step `from`, over the
+/// rest of the run: how far a body left its place after settling. Vertical motion is judged
+/// apart: a structure's sink and energy (StructureWatch), so that a stack rising as Box2D pushes
+/// out its polygon skin, or sinking into soft contacts, is not taken for a body leaving its place.
 class DisplacementProbe : public Probe {
  public:
   explicit DisplacementProbe(long from) : from_(from) {}
@@ -133,19 +135,19 @@ namespace impulse2d::stress {
 struct StructureFigures {
   double sway = 0.0;     ///< m. Largest sideways distance of the top body from its start
   double sink = 0.0;     ///< m. Largest drop of the top body below its start (0 if it only rose)
-  double creep = 0.0;    ///< m/s. Growth of the largest displacement over the last window
+  double creep = 0.0;    ///< m/s. Growth of the largest sideways displacement, last window
   bool bounded = false;  ///< neither displacement nor energy grew over the last window
 };
 
 /// Watches a structure window by window. The top body is the dynamic body that starts highest.
-/// Window k's displacement D_k is the largest distance of any dynamic body from its start over
-/// the window's steps, its energy E_k the largest total (kinetic plus potential) energy over
-/// them, as a height of the whole structure's weight. The first window is the settling and is no
-/// reference; after each window from the third on, the motion is bounded when neither figure
-/// rose above its largest over the windows between by more than its tolerance:
-/// D_k ≤ max(D_1 … D_(k−1)) + displacementTolerance, E_k ≤ max(E_1 … E_(k−1)) +
-/// energyTolerance. A jitter then counts as bounded, a steady drift never does; the creep is
-/// how far D_k rose above that largest, per second of the window.
+/// Window k's displacement D_k is the largest sideways distance of any dynamic body from its
+/// start over the window's steps (vertical motion shows in the energy and the sink), its energy E_k
+/// the largest total (kinetic plus potential) energy over them, as a height of the whole
+/// structure's weight. The first window is the settling and is no reference; after each window from
+/// the third on, the motion is bounded when neither figure rose above its largest over the windows
+/// between by more than its tolerance: D_k ≤ max(D_1 … D_(k−1)) + displacementTolerance, E_k ≤
+/// max(E_1 … E_(k−1)) + energyTolerance. A jitter then counts as bounded, a steady drift never
+/// does; the creep is how far D_k rose above that largest, per second of the window.
 class StructureWatch {
  public:
   /// m. Growth of a window's largest displacement, and of its largest energy as a height of

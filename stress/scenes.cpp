@@ -40,8 +40,9 @@ constexpr long kSkinStep = 30;
 /// pushing out.
 constexpr long kSettledStep = 120;
 
-const std::string kDisplacementMeasure = "largest displacement of a body after 0.5 s (m)";
-const std::string kFallsByEye = "a body visibly leaves its place (10 cm is a tenth of a box)";
+const std::string kDisplacementMeasure = "largest sideways displacement of a body after 0.5 s (m)";
+const std::string kFallsByEye =
+    "a body visibly leaves its place sideways (10 cm is a tenth of a box)";
 
 Scene baseScene(const std::string& name, int steps) {
   Scene scene;
