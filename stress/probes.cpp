@@ -123,6 +123,7 @@ void StructureWatch::endWindow(double seconds) {
   if (windows_ >= 2) {
     const double growth = displacement_ - largestDisplacement_;
     figures_.creep = std::max(0.0, growth) / seconds;
+    figures_.drift = displacement_;
     figures_.bounded =
         growth <= kDisplacementTolerance && energy_ - largestEnergy_ <= kEnergyTolerance;
   }

@@ -136,6 +136,7 @@ struct StructureFigures {
   double sway = 0.0;     ///< m. Largest sideways distance of the top body from its start
   double sink = 0.0;     ///< m. Largest drop of the top body below its start (0 if it only rose)
   double creep = 0.0;    ///< m/s. Growth of the largest sideways displacement, last window
+  double drift = 0.0;    ///< m. The largest sideways displacement over the last window, D_k
   bool bounded = false;  ///< neither displacement nor energy grew over the last window
 };
 

@@ -134,10 +134,10 @@ bool structureEnded(const StressScene& stress, double knob, RunLength length, co
     return true;
   }
   if (step < horizon.most) return false;
-  // Still moving at the end: it fails if its creep, kept up for as long again, would carry the
-  // figure past the limit; a slower drift (a stack settling into its slop) is reported, not failed.
-  const double projected = probe.measure() + outcome.structure.creep * outcome.seconds;
-  if (outcome.ended.empty()) outcome.ended = projected > limit ? "creep" : "unbounded";
+  // Still moving at the end: it fails if its creep, kept up for as long again, would carry it
+  // sideways past the scene's limit; a slower drift is reported, not failed.
+  const double projected = outcome.structure.drift + outcome.structure.creep * outcome.seconds;
+  if (outcome.ended.empty()) outcome.ended = projected > horizon.creepLimit ? "creep" : "unbounded";
   return true;
 }
 

@@ -43,8 +43,8 @@ struct Outcome {
   /// s. When a structure's run first failed (its figure over the limit, or its sink); 0 if not.
   double failedAt = 0.0;
   /// Why a structure's run ended: "limit", "sink", "bounded"; at the horizon's end still growing,
-  /// "creep" when its creep kept up as long again would carry the figure past the limit (a
-  /// failure), else "unbounded"; empty for other scenes and for a run that stopped.
+  /// "creep" when its creep kept up as long again would carry it sideways past the scene's creep
+  /// limit (a failure), else "unbounded"; empty for other scenes and for a run that stopped.
   std::string ended;
   /// A structure's slow figures; zero for other scenes.
   StructureFigures structure;

@@ -480,10 +480,12 @@ Scene farFromOrigin(double distance) {
   return scene;
 }
 
-/// The horizon of a structure whose top body stands on `contacts(knob)` contacts above the ground.
-Horizon structureHorizon(const std::function<int(double knob)>& contacts) {
+/// The horizon of a structure whose top body stands on `contacts(knob)` contacts above the ground,
+/// whose creep is judged against `creepLimit` (m) sideways.
+Horizon structureHorizon(const std::function<int(double knob)>& contacts,
+                         double creepLimit = kDisplacementLimit) {
   return {kHorizonLeast, kHorizonWindow, kHorizonMost,
-          [contacts](double knob) { return kSinkPerContact * contacts(knob); }};
+          [contacts](double knob) { return kSinkPerContact * contacts(knob); }, creepLimit};
 }
 
 /// Contacts under the top of a stack or pyramid: one per box or row.
@@ -547,7 +549,7 @@ void stackScenes(std::vector<StressScene>& scenes) {
        {},
        {},
        {"sequential + 4 substeps", "soft step, 16 substeps at 240 Hz", "micro − pairs"},
-       structureHorizon([](double) { return kLightBoxes + 1; })});
+       structureHorizon([](double) { return kLightBoxes + 1; }, kSqueezedOut)});
   scenes.push_back({"heavy_pyramid",
                     "Pyramid topped by a heavy box",
                     ratio,

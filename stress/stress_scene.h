@@ -54,7 +54,7 @@ struct Intervention {
 /// How long a structure is watched, and what its slow motion may do. A structure runs at least
 /// `least` steps, then window by window until its motion is bounded (StructureWatch) or `most`
 /// steps have run. A run still growing at `most` fails by creep when its creep, kept up for as
-/// long again, would carry its figure past the limit.
+/// long again, would carry its largest sideways displacement past `creepLimit`.
 struct Horizon {
   long least = 0;   ///< steps run whatever happens; 0: not a structure, the scene's steps are run
   long window = 0;  ///< steps of a window of the boundedness test
@@ -62,6 +62,8 @@ struct Horizon {
   /// m. The settling sink of the top body (StructureWatch) at a knob value beyond which the run
   /// fails.
   std::function<double(double knob)> sinkLimit;
+  /// m. The sideways displacement a creep is judged against: the scene's limit on leaving a place.
+  double creepLimit = 0.0;
 };
 
 struct StressScene {
