@@ -58,15 +58,24 @@ BreakingPoint findBreakingPoint(const Knob& knob, double hardest,
 }
 
 double hardestFor(const StressScene& stress, const Method& method) {
-  const auto limit = stress.hardestFor.find(method.solver);
-  return limit == stress.hardestFor.end() ? stress.knob.hard : limit->second;
+  for (const std::string& name : {method.label, method.solver}) {
+    const auto limit = stress.hardestFor.find(name);
+    if (limit != stress.hardestFor.end()) return limit->second;
+  }
+  return stress.knob.hard;
 }
 
 BreakingPoint findBreakingPoint(const StressScene& stress, const Method& method,
                                 const SearchSettings& settings) {
+  const double hardest = hardestFor(stress, method);
   return findBreakingPoint(
-      stress.knob, hardestFor(stress, method),
-      [&](double knob) { return runStress(stress, method, knob); }, settings);
+      stress.knob, hardest,
+      [&](double knob) {
+        const RunLength length =
+            knob == hardest ? RunLength::UntilCollapsed : RunLength::UntilFailed;
+        return runStress(stress, method, knob, {}, length);
+      },
+      settings);
 }
 
 }  // namespace impulse2d::stress

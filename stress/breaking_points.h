@@ -46,10 +46,11 @@ BreakingPoint findBreakingPoint(const Knob& knob, double hardest,
                                 const SearchSettings& settings = {});
 
 /// The hardest knob value searched for the method: the knob's hard end, or the scene's limit for
-/// the solver where the full range costs too much.
+/// the method (by label) or its solver where the full range costs too much.
 double hardestFor(const StressScene& stress, const Method& method);
 
-/// The method's breaking point on the scene.
+/// The method's breaking point on the scene. The run at the hardest value goes on past a failure
+/// until the structure collapses (RunLength::UntilCollapsed), so its sway is seen whole.
 BreakingPoint findBreakingPoint(const StressScene& stress, const Method& method,
                                 const SearchSettings& settings = {});
 

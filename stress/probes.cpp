@@ -16,7 +16,7 @@ void DisplacementProbe::observe(const Simulation& simulation) {
   }
   for (size_t i = 0; i < bodies.size(); ++i) {
     if (bodies[i].isStatic()) continue;
-    largest_ = std::max(largest_, (bodies[i].position - start_[i]).norm());
+    largest_ = std::max(largest_, std::abs(bodies[i].position.x() - start_[i].x()));
   }
 }
 
@@ -87,6 +87,52 @@ void TwinProbe::observe(const Simulation& simulation) {
     const Vec2 moved = bodies[i].position - offset_;
     largest_ = std::max(largest_, (moved - twin_->bodies()[i].position).norm());
   }
+}
+
+}  // namespace impulse2d::stress
+
+namespace impulse2d::stress {
+
+void StructureWatch::observe(const Simulation& simulation) {
+  const std::vector<Body>& bodies = simulation.bodies();
+  const double energy = kineticEnergy(simulation) + potentialEnergy(simulation);
+  if (start_.empty()) {
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      start_.push_back(bodies[i].position);
+      weight_ += bodies[i].mass * simulation.settings().gravity.norm();
+      const bool higher = bodies[i].position.y() > bodies[top_].position.y();
+      if (!bodies[i].isStatic() && (bodies[top_].isStatic() || higher)) top_ = i;
+    }
+  }
+  const Vec2 topMoved = bodies[top_].position - start_[top_];
+  figures_.sway = std::max(figures_.sway, std::abs(topMoved.x()));
+  figures_.sink = std::max(figures_.sink, -topMoved.y());
+  double displacement = 0.0;
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].isStatic())
+      displacement = std::max(displacement, std::abs(bodies[i].position.x() - start_[i].x()));
+  }
+  displacement_ = windowStarted_ ? std::max(displacement_, displacement) : displacement;
+  energy_ = windowStarted_ ? std::max(energy_, energy / weight_) : energy / weight_;
+  windowStarted_ = true;
+  ended_ = simulation.stepCount() > 0 && simulation.stepCount() % window_ == 0;
+  if (ended_) endWindow(double(window_) * simulation.settings().dt);
+}
+
+void StructureWatch::endWindow(double seconds) {
+  if (windows_ >= 2) {
+    const double growth = displacement_ - largestDisplacement_;
+    figures_.creep = std::max(0.0, growth) / seconds;
+    figures_.drift = displacement_;
+    figures_.bounded =
+        growth <= kDisplacementTolerance && energy_ - largestEnergy_ <= kEnergyTolerance;
+  }
+  if (windows_ >= 1) {
+    largestDisplacement_ = std::max(largestDisplacement_, displacement_);
+    largestEnergy_ = windows_ == 1 ? energy_ : std::max(largestEnergy_, energy_);
+  }
+  ++windows_;
+  windowStarted_ = false;
 }
 
 }  // namespace impulse2d::stress

@@ -10,8 +10,10 @@
 
 namespace impulse2d::stress {
 
-/// m. Largest distance of any dynamic body from where it was at step `from`, over the rest of
-/// the run: how far a body moved after settling.
+/// m. Largest sideways distance of any dynamic body from where it was at step `from`, over the
+/// rest of the run: how far a body left its place after settling. Vertical motion is judged
+/// apart: a structure's sink and energy (StructureWatch), so that a stack rising as Box2D pushes
+/// out its polygon skin, or sinking into soft contacts, is not taken for a body leaving its place.
 class DisplacementProbe : public Probe {
  public:
   explicit DisplacementProbe(long from) : from_(from) {}
@@ -123,6 +125,60 @@ class TwinProbe : public Probe {
   std::unique_ptr<Simulation> twin_;
   Vec2 offset_;
   double largest_ = 0.0;
+};
+
+}  // namespace impulse2d::stress
+
+namespace impulse2d::stress {
+
+/// The slow figures of a structure's run, all from the positions at the start.
+struct StructureFigures {
+  double sway = 0.0;     ///< m. Largest sideways distance of the top body from its start
+  double sink = 0.0;     ///< m. Largest drop of the top body below its start (0 if it only rose)
+  double creep = 0.0;    ///< m/s. Growth of the largest sideways displacement, last window
+  double drift = 0.0;    ///< m. The largest sideways displacement over the last window, D_k
+  bool bounded = false;  ///< neither displacement nor energy grew over the last window
+};
+
+/// Watches a structure window by window. The top body is the dynamic body that starts highest.
+/// Window k's displacement D_k is the largest sideways distance of any dynamic body from its
+/// start over the window's steps (vertical motion shows in the energy and the sink), its energy E_k
+/// the largest total (kinetic plus potential) energy over them, as a height of the whole
+/// structure's weight. The first window is the settling and is no reference; after each window from
+/// the third on, the motion is bounded when neither figure rose above its largest over the windows
+/// between by more than its tolerance: D_k ≤ max(D_1 … D_(k−1)) + displacementTolerance, E_k ≤
+/// max(E_1 … E_(k−1)) + energyTolerance. A jitter then counts as bounded, a steady drift never
+/// does; the creep is how far D_k rose above that largest, per second of the window.
+class StructureWatch {
+ public:
+  /// m. Growth of a window's largest displacement, and of its largest energy as a height of
+  /// the structure's weight, that still counts as bounded: a hundredth of a 1 m box's 10 cm
+  /// displacement limit.
+  static constexpr double kDisplacementTolerance = 1e-3;
+  static constexpr double kEnergyTolerance = 1e-3;
+
+  explicit StructureWatch(long window) : window_(window) {}
+  /// Called with the starting state, then after every step.
+  void observe(const Simulation& simulation);
+  const StructureFigures& figures() const { return figures_; }
+  /// Whether the step just observed ended a window.
+  bool windowEnded() const { return ended_; }
+
+ private:
+  void endWindow(double seconds);
+
+  long window_;
+  std::vector<Vec2> start_;
+  size_t top_ = 0;
+  double weight_ = 0.0;
+  double displacement_ = 0.0;  ///< over the current window
+  double energy_ = 0.0;        ///< over the current window, as a height
+  bool windowStarted_ = false;
+  int windows_ = 0;                   ///< windows ended so far
+  double largestDisplacement_ = 0.0;  ///< over the windows ended, the first left out
+  double largestEnergy_ = 0.0;
+  bool ended_ = false;
+  StructureFigures figures_;
 };
 
 }  // namespace impulse2d::stress

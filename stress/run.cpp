@@ -107,32 +107,74 @@ void intervene(const StressScene& stress, Simulation& simulation) {
 }
 
 Outcome stoppedAt(const std::string& reason) {
-  return {std::numeric_limits<double>::infinity(), true, reason};
+  Outcome outcome;
+  outcome.measure = std::numeric_limits<double>::infinity();
+  outcome.failed = true;
+  outcome.stopped = reason;
+  return outcome;
+}
+
+/// Whether a structure's run is over after this step: failed (or collapsed), or bounded from the
+/// horizon's least steps on; sets the outcome's figures and why it ended.
+bool structureEnded(const StressScene& stress, double knob, RunLength length, const Probe& probe,
+                    const StructureWatch& watch, long step, Outcome& outcome) {
+  const Horizon& horizon = stress.horizon;
+  const double limit = stress.criterion.limit;
+  const double endAt = length == RunLength::UntilCollapsed ? kCollapseFactor * limit : limit;
+  outcome.structure = watch.figures();
+  if (outcome.ended.empty() && probe.measure() > limit) outcome.ended = "limit";
+  if (outcome.ended.empty() && outcome.structure.sink > horizon.sinkLimit(knob))
+    outcome.ended = "sink";
+  if (!outcome.ended.empty() && outcome.failedAt == 0.0) outcome.failedAt = outcome.seconds;
+  if (probe.measure() > endAt || (outcome.ended == "sink" && length == RunLength::UntilFailed))
+    return true;
+  if (!watch.windowEnded() || step < horizon.least) return false;
+  if (outcome.structure.bounded) {
+    if (outcome.ended.empty()) outcome.ended = "bounded";
+    return true;
+  }
+  if (step < horizon.most) return false;
+  // Still moving at the end: it fails if its creep, kept up for as long again, would carry it
+  // sideways past the scene's limit; a slower drift is reported, not failed.
+  const double projected = outcome.structure.drift + outcome.structure.creep * outcome.seconds;
+  if (outcome.ended.empty()) outcome.ended = projected > horizon.creepLimit ? "creep" : "unbounded";
+  return true;
 }
 
 }  // namespace
 
 Outcome runStress(const StressScene& stress, const Method& method, double knob,
-                  const StepWatcher& watch) {
+                  const StepWatcher& watch, RunLength length) {
   const Scene scene = sceneFor(stress, method, knob);
   std::unique_ptr<Simulation> simulation = makeSimulation(scene);
   std::unique_ptr<Probe> probe = stress.probe(scene);
+  const bool structure = stress.horizon.least > 0;
+  StructureWatch structureWatch(structure ? stress.horizon.window : 1);
+  const long steps = structure ? stress.horizon.most : scene.steps;
   probe->observe(*simulation);
+  if (structure) structureWatch.observe(*simulation);
   if (watch) watch(*simulation);
-  for (long step = 0; step < scene.steps; ++step) {
+  Outcome outcome;
+  for (long step = 1; step <= steps; ++step) {
     intervene(stress, *simulation);
     try {
       simulation->step();
     } catch (const NonFiniteState& error) {
       return stoppedAt(error.what());  // names the body and the step
     } catch (const std::exception& error) {
-      return stoppedAt(std::string(error.what()) + " at step " + std::to_string(step + 1));
+      return stoppedAt(std::string(error.what()) + " at step " + std::to_string(step));
     }
     probe->observe(*simulation);
     if (watch) watch(*simulation);
+    outcome.seconds = double(step) * scene.world.dt;
+    if (!structure) continue;
+    structureWatch.observe(*simulation);
+    if (structureEnded(stress, knob, length, *probe, structureWatch, step, outcome)) break;
   }
-  const double measure = probe->measure();
-  return {measure, measure > stress.criterion.limit, ""};
+  outcome.measure = probe->measure();
+  outcome.failed = outcome.measure > stress.criterion.limit || outcome.ended == "sink" ||
+                   outcome.ended == "creep";
+  return outcome;
 }
 
 }  // namespace impulse2d::stress

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "probes.h"
 #include "stress_scene.h"
 
 namespace impulse2d::stress {
@@ -37,7 +38,27 @@ struct Outcome {
   /// Empty, or why the run stopped: "body NAME became non-finite at step N (solver S)", a
   /// solver's error.
   std::string stopped;
+  /// s. Simulated time the run lasted (a structure's run ends early once failed or bounded).
+  double seconds = 0.0;
+  /// s. When a structure's run first failed (its figure over the limit, or its sink); 0 if not.
+  double failedAt = 0.0;
+  /// Why a structure's run ended: "limit", "sink", "bounded"; at the horizon's end still growing,
+  /// "creep" when its creep kept up as long again would carry it sideways past the scene's creep
+  /// limit (a failure), else "unbounded"; empty for other scenes and for a run that stopped.
+  std::string ended;
+  /// A structure's slow figures; zero for other scenes.
+  StructureFigures structure;
 };
+
+/// How far past its failure a structure's run goes.
+enum class RunLength {
+  UntilFailed,     ///< ends at the failure: all a search needs to know
+  UntilCollapsed,  ///< runs on past its limit to kCollapseFactor times it, to see how far it sways
+};
+
+/// A structure whose figure exceeds its limit this many times has collapsed (half a box for the
+/// 10 cm displacement limit): nothing more is learned by watching it.
+constexpr double kCollapseFactor = 5.0;
 
 /// The scene at `knob`, set up for the method (solver, overrides, sleeping off).
 Scene sceneFor(const StressScene& stress, const Method& method, double knob);
@@ -45,9 +66,12 @@ Scene sceneFor(const StressScene& stress, const Method& method, double knob);
 /// Called after the start and after every step, e.g. to write frames.
 using StepWatcher = std::function<void(const Simulation&)>;
 
-/// Runs the scene at `knob` with the method for its steps. Every step the bodies are checked: at
-/// the first non-finite one the run stops and says so instead of carrying NaN on.
+/// Runs the scene at `knob` with the method for its steps, or a structure over its horizon.
+/// Every step the bodies are checked: at the first non-finite one the run stops and says so
+/// instead of carrying NaN on. A structure's figures (displacement, deepest contact) never fall,
+/// so its run ends once the figure exceeds the limit (or kCollapseFactor times it) or its sink
+/// exceeds the sink limit, or at a window's end from `least` on once its motion is bounded.
 Outcome runStress(const StressScene& stress, const Method& method, double knob,
-                  const StepWatcher& watch = {});
+                  const StepWatcher& watch = {}, RunLength length = RunLength::UntilFailed);
 
 }  // namespace impulse2d::stress

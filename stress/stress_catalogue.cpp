@@ -3,9 +3,13 @@
 // stability runs it and assembles docs/stability.md.
 //   stress_catalogue --out DIR [--frames DIR] [--scenes a,b,...]
 //   stress_catalogue --summary-header       the header of the summary table
+//   stress_catalogue --run SCENE METHOD KNOB [KEY=VALUE...]
+//                                           one run to its collapse, its figures on stdout; the
+//                                           settings (as i2d --set) are added to the method's
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -84,18 +88,27 @@ std::vector<Method> methodsOf(const StressScene& stress) {
 
 /// The run at the first failing knob value, as frames and a contact sheet; returns the sheet.
 std::string writeFailureSheet(const std::string& root, const StressScene& stress,
-                              const Method& method, double knob) {
+                              const Method& method, const Sample& failure) {
+  const double knob = failure.knob;
   const Scene scene = sceneFor(stress, method, knob);
+  // A run that stopped (non-finite) has no duration: it is drawn over the scene's steps.
+  const long steps = failure.outcome.seconds > 0.0
+                         ? std::lround(failure.outcome.seconds / scene.world.dt)
+                         : long(scene.steps);
   const render::RenderSettings settings;
   const render::Camera camera = render::fitCamera(buildBodies(scene), ViewDef{}, settings);
   render::FrameRenderer renderer(camera, stress.name + " (" + method.label + ")", settings);
-  const int every = std::max(1, scene.steps / (kFramesPerFailure - 1));
+  const int every = int(std::max(1L, steps / (kFramesPerFailure - 1)));
   render::FrameWriter writer(root, stress.name, every, stress.name + "_" + slug(method.label),
                              settings);
-  runStress(stress, method, knob, [&](const Simulation& simulation) {
-    if (writer.wants(simulation.stepCount()))
-      writer.write(simulation.stepCount(), renderer.draw(simulation));
-  });
+  runStress(
+      stress, method, knob,
+      [&](const Simulation& simulation) {
+        if (writer.wants(simulation.stepCount()))
+          writer.write(simulation.stepCount(), renderer.draw(simulation));
+      },
+      failure.knob == hardestFor(stress, method) ? RunLength::UntilCollapsed
+                                                 : RunLength::UntilFailed);
   return writer.writeContactSheet().string();
 }
 
@@ -125,24 +138,78 @@ void writeSampleRows(std::ostream& csv, const StressScene& stress, const Method&
   }
 }
 
+/// How a structure's run failed: "limit at 12.3 s", "sink at 0.4 s", "creep to 40 s".
+std::string failedBy(const Outcome& outcome) {
+  if (!outcome.stopped.empty()) return "stopped";
+  if (outcome.ended == "creep") return "creep to " + formatNumber(outcome.seconds) + " s";
+  return outcome.ended + " at " + formatNumber(outcome.failedAt) + " s";
+}
+
+/// A structure's slow figures on a run: sway, sink, creep and how the run ended.
+std::string slowFigures(const Outcome& outcome) {
+  if (!outcome.stopped.empty()) return "stopped";
+  const StructureFigures& figures = outcome.structure;
+  const bool failed = outcome.ended != "bounded" && outcome.ended != "unbounded";
+  std::string end = failed ? failedBy(outcome) + ", " : "";
+  end += figures.bounded ? "bounded at " : "ran ";
+  return formatNumber(figures.sway) + " · " + formatNumber(figures.sink) + " · " +
+         formatNumber(1e3 * figures.creep) + " · " + end + formatNumber(outcome.seconds) + " s";
+}
+
+const Sample* sampleAt(const BreakingPoint& point, double knob) {
+  for (const Sample& sample : point.samples) {
+    if (sample.knob == knob) return &sample;
+  }
+  return nullptr;
+}
+
 std::string methodRow(const StressScene& stress, const Method& method, const BreakingPoint& point,
                       const std::string& sheet) {
   const Knob& knob = stress.knob;
+  const bool structure = stress.horizon.least > 0;
   std::string held =
       point.verdict == Verdict::FailsAtEasiest ? "—" : formatKnob(knob, point.lastHeld);
   std::string failed = point.verdict == Verdict::HoldsThroughout
                            ? "none to " + formatKnob(knob, point.hardest)
                            : formatKnob(knob, point.firstFailed);
-  std::string figure = "—";
-  for (const Sample& sample : point.samples) {
-    if (point.verdict != Verdict::HoldsThroughout && sample.knob == point.firstFailed) {
-      figure = sample.outcome.stopped.empty() ? formatNumber(sample.outcome.measure) : "stopped";
-    }
+  std::string figure = "—", how = "—", hardest = "—";
+  const Sample* first = sampleAt(point, point.firstFailed);
+  if (point.verdict != Verdict::HoldsThroughout && first != nullptr) {
+    figure = first->outcome.stopped.empty() ? formatNumber(first->outcome.measure) : "stopped";
+    how = failedBy(first->outcome);
   }
+  if (const Sample* last = sampleAt(point, point.hardest)) hardest = slowFigures(last->outcome);
   const std::string note = failureNote(point);
   return "| " + method.label + " | " + held + " | " + failed + " | " + figure + " | " +
-         std::to_string(point.samples.size()) + " | " + (sheet.empty() ? "—" : "`" + sheet + "`") +
-         (note.empty() ? "" : " — " + note) + " |\n";
+         (structure ? how + " | " + hardest + " | " : "") + std::to_string(point.samples.size()) +
+         " | " + (sheet.empty() ? "—" : "`" + sheet + "`") + (note.empty() ? "" : " — " + note) +
+         " |\n";
+}
+
+/// The per-scene table's header; a structure's adds how it failed and its slow figures.
+std::string tableHeader(const StressScene& stress) {
+  if (stress.horizon.least == 0) {
+    return "| method | holds at | first fails at | figure there | runs | contact sheet |\n"
+           "| --- | --- | --- | --- | --- | --- |\n";
+  }
+  return "| method | holds at | first fails at | figure there | failed by | at " +
+         formatKnob(stress.knob, stress.knob.hard) +
+         ": sway (m) · sink (m) · creep (mm/s) · end | runs | contact sheet |\n"
+         "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+}
+
+/// What a structure's horizon is and how its sink is judged, for its table's preamble.
+std::string horizonNote(const StressScene& stress) {
+  const Horizon& horizon = stress.horizon;
+  if (horizon.least == 0) return "";
+  const double dt = stress.build(stress.knob.easy).world.dt;
+  const Knob& knob = stress.knob;
+  return "**Watched** at least " + formatNumber(horizon.least * dt) + " s, then in windows of " +
+         formatNumber(horizon.window * dt) + " s until its motion is bounded, " +
+         formatNumber(horizon.most * dt) + " s at most.\n**Also fails** when the top body sinks " +
+         "more than " + formatNumber(horizon.sinkLimit(knob.easy)) + " m at " +
+         formatKnob(knob, knob.easy) + ", " + formatNumber(horizon.sinkLimit(knob.hard)) +
+         " m at " + formatKnob(knob, knob.hard) + ", or creeps towards the limit at the end.\n\n";
 }
 
 void writeChartSettings(const std::string& path, const StressScene& stress) {
@@ -165,25 +232,27 @@ void catalogueScene(const StressScene& stress, const Options& options) {
         << ", searched from " << formatKnob(knob, knob.easy) << " to "
         << formatKnob(knob, knob.hard) << ".\n**Fails when** the " << stress.criterion.measure
         << " exceeds " << formatNumber(stress.criterion.limit) << ".\n**By eye:** "
-        << stress.criterion.byEye << ".\n\n";
+        << stress.criterion.byEye << ".\n\n"
+        << horizonNote(stress);
   for (const Intervention& intervention : stress.interventions) {
     table << "**Mid-run:** at step " << intervention.step << ", " << intervention.description
           << ".\n\n";
   }
-  for (const auto& [solver, hardest] : stress.hardestFor) {
-    table << "**" << solver << "** is searched only to " << formatKnob(knob, hardest)
+  for (const auto& [name, hardest] : stress.hardestFor) {
+    table << "**" << name << "** is searched only to " << formatKnob(knob, hardest)
           << ": beyond, its runs cost more than the catalogue's time budget.\n\n";
   }
-  table << "| method | holds at | first fails at | figure there | runs | contact sheet |\n"
-        << "| --- | --- | --- | --- | --- | --- |\n";
+  table << tableHeader(stress);
   row << "| " << stress.name << " (" << stress.knob.name << ") |";
   std::map<std::string, std::string> cells;
   for (const Method& method : methodsOf(stress)) {
     const auto begin = std::chrono::steady_clock::now();
+    const std::clock_t cpuBegin = std::clock();
     const BreakingPoint point = findBreakingPoint(stress, method);
     std::string sheet;
     if (!options.frames.empty() && point.verdict != Verdict::HoldsThroughout) {
-      sheet = writeFailureSheet(options.frames, stress, method, point.firstFailed);
+      sheet =
+          writeFailureSheet(options.frames, stress, method, *sampleAt(point, point.firstFailed));
     }
     table << methodRow(stress, method, point, sheet);
     writeChartBlock(data, stress, method, point);
@@ -191,7 +260,7 @@ void catalogueScene(const StressScene& stress, const Options& options) {
     cells[method.label] = summaryCell(stress, point);
     std::cerr << stress.name << " / " << method.label << ": " << summaryCell(stress, point) << " ("
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count()
-              << " s)\n";
+              << " s, " << double(std::clock() - cpuBegin) / CLOCKS_PER_SEC << " s of CPU)\n";
   }
   for (const Method& method : baseMethods()) {
     row << ' ' << (cells.count(method.label) ? cells[method.label] : "—") << " |";
@@ -233,8 +302,35 @@ Options parseOptions(int argc, char** argv) {
 
 }  // namespace
 
+/// One run, watched to its collapse as the hardest value of a search is, its figures printed.
+void printRun(const std::string& scene, const std::string& label, double knob,
+              const std::vector<std::string>& settings) {
+  const auto begin = std::chrono::steady_clock::now();
+  Method method = findMethod(label);
+  std::string changes;
+  for (const std::string& setting : settings) {
+    method.settings.push_back(setting);
+    changes += " " + setting;
+  }
+  const Outcome outcome =
+      runStress(findStressScene(scene), method, knob, {}, RunLength::UntilCollapsed);
+  const StructureFigures& figures = outcome.structure;
+  std::cout << scene << " / " << label << changes << " at " << knob << ": figure "
+            << outcome.measure << (outcome.failed ? " (failed)" : " (held)") << ", ended "
+            << outcome.ended << outcome.stopped << " at " << outcome.seconds << " s (failed at "
+            << outcome.failedAt << " s); sway " << figures.sway << " m, sink " << figures.sink
+            << " m, creep " << figures.creep << " m/s; "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count()
+            << " s to run\n";
+}
+
 int main(int argc, char** argv) {
   try {
+    if (argc >= 5 && std::string(argv[1]) == "--run") {
+      printRun(argv[2], argv[3], std::stod(argv[4]),
+               std::vector<std::string>(argv + 5, argv + argc));
+      return 0;
+    }
     if (argc == 2 && std::string(argv[1]) == "--summary-header") {
       std::cout << summaryHeader();
       return 0;

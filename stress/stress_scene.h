@@ -51,6 +51,21 @@ struct Intervention {
   std::string description;
 };
 
+/// How long a structure is watched, and what its slow motion may do. A structure runs at least
+/// `least` steps, then window by window until its motion is bounded (StructureWatch) or `most`
+/// steps have run. A run still growing at `most` fails by creep when its creep, kept up for as
+/// long again, would carry its largest sideways displacement past `creepLimit`.
+struct Horizon {
+  long least = 0;   ///< steps run whatever happens; 0: not a structure, the scene's steps are run
+  long window = 0;  ///< steps of a window of the boundedness test
+  long most = 0;    ///< steps at most
+  /// m. The settling sink of the top body (StructureWatch) at a knob value beyond which the run
+  /// fails.
+  std::function<double(double knob)> sinkLimit;
+  /// m. The sideways displacement a creep is judged against: the scene's limit on leaving a place.
+  double creepLimit = 0.0;
+};
+
 struct StressScene {
   std::string name;   ///< file-name safe, e.g. "box_stack"
   std::string title;  ///< e.g. "Tall stack of boxes"
@@ -61,12 +76,15 @@ struct StressScene {
   /// A fresh probe for a run of the scene at that knob value.
   std::function<std::unique_ptr<Probe>(const Scene& scene)> probe;
   std::vector<Intervention> interventions;
-  /// Per solver name, the hardest knob value searched, where the full range costs too much
-  /// (the reference's dense Lemke on many contact points); the search starts from `easy` as ever.
+  /// Per method label or solver name, the hardest knob value searched, where the full range costs
+  /// too much; the search starts from `easy` as ever.
   std::map<std::string, double> hardestFor;
   /// Methods searched on this scene besides baseMethods() (labels of extraMethods()): the fix a
   /// lecture would teach for it, or fixes turned off together where one alone hides the failure.
   std::vector<std::string> extraMethods;
+  /// Structures (stacks, pyramids, heavy on light, arches, card houses) are watched over a long
+  /// horizon for slow failures; other scenes leave it empty.
+  Horizon horizon;
 };
 
 /// Every stress scene, in the order docs/stability.md presents them.
