@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "impulse2d/collide.h"
+#include "impulse2d/internal_edges.h"
 
 namespace impulse2d {
 namespace {
@@ -131,6 +132,7 @@ void World::findContacts(double h) {
   previousManifolds_.swap(manifolds_);
   manifolds_.clear();
   findCandidatePairs(h);
+  listStaticBodies();
   ManifoldIterator old = previousManifolds_.cbegin();
   for (const BodyPair& pair : candidatePairs_) {
     old = keepSleepingManifolds(old, pair);
@@ -167,10 +169,22 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   manifold.bodyB = pair.second;
   const double distance = contactDistance(a, b, h);
   if (collide(a, b, distance, manifold) == 0) return false;
+  if (settings_.refuseInternalEdges &&
+      dropInternalEdgePoints(bodies_, staticBodies_, manifold) == 0) {
+    return false;
+  }
   manifold.found = {a.angle, b.angle, a.toLocal(b.position), distance};
   manifold.friction = mixFriction(a.friction, b.friction);
   manifold.restitution = mixRestitution(a.restitution, b.restitution);
   return true;
+}
+
+// The static bodies a contact on one of them may meet a flush neighbour among (internal edges).
+void World::listStaticBodies() {
+  staticBodies_.clear();
+  for (int i = 0; i < int(bodies_.size()); ++i) {
+    if (bodies_[i].isStatic()) staticBodies_.push_back(i);
+  }
 }
 
 // Speculative contacts, by the world's setting or because the solver finds its contacts ahead.

@@ -27,6 +27,10 @@ struct WorldSettings {
   /// by |v|·dt and a pair keeps contact points while the gap is under contactMargin + |vB−vA|·dt,
   /// so the solver can stop a fast small ball at a thin wall instead of letting it tunnel.
   bool speculativeContacts = false;
+  /// Refuse contacts on internal edges (internal_edges.h): where static pieces lie flush, a
+  /// moving body meets one surface. Off, a box sliding across the seam of two floor tiles catches
+  /// on the second tile's side face, and a disc rolling over it hops off the corner.
+  bool refuseInternalEdges = true;
   /// Islands of bodies at rest go to sleep: they are not integrated, their contacts are neither
   /// recomputed nor solved, until an awake body touches them or the user pushes one.
   bool sleeping = false;
