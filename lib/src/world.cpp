@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "impulse2d/collide.h"
+#include "impulse2d/continuous.h"
 #include "impulse2d/internal_edges.h"
 
 namespace impulse2d {
@@ -102,8 +103,12 @@ void World::substep(double h) {
   }
   findContacts(h);
   wakeTouchedIslands();
+  rememberStartPoses();
   WorldStages stages(*this, h);
   solver_->step({bodies_, manifoldsToSolve(), h, observer_, settings_.gravity}, stages);
+  if (settings_.continuous) {
+    stopAtTimeOfImpact(bodies_, startPoses_, staticBodies_, 0.5 * settings_.contactMargin);
+  }
   storeSolvedManifolds();
   stopAtNonFiniteBody();
   putRestingIslandsToSleep(h);
@@ -177,6 +182,15 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   manifold.friction = mixFriction(a.friction, b.friction);
   manifold.restitution = mixRestitution(a.restitution, b.restitution);
   return true;
+}
+
+// Where each body starts the substep, for continuous collision.
+void World::rememberStartPoses() {
+  if (!settings_.continuous) return;
+  startPoses_.resize(bodies_.size());
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    startPoses_[i] = {bodies_[i].position, bodies_[i].angle};
+  }
 }
 
 // The static bodies a contact on one of them may meet a flush neighbour among (internal edges).

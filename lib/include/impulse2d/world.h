@@ -27,6 +27,9 @@
 //      solvePositions      the solver removes what penetration remains.
 //      refreshCaches       awake bodies: rotation from the angle and bounds, once per substep.
 //      A method that moves the bodies within its own substeps calls clearForces instead.
+//   then stopAtTimeOfImpact (with continuous on): an awake body whose motion in the substep
+//                          would carry its core into a static body is moved back to where it
+//                          reaches it (continuous.h).
 //   5. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
 //                          thresholds for timeToSleep sleeps; its velocities become zero.
 #pragma once
@@ -35,6 +38,7 @@
 #include <utility>
 #include <vector>
 
+#include "impulse2d/continuous.h"
 #include "impulse2d/simulation.h"
 
 namespace impulse2d {
@@ -103,6 +107,7 @@ class World : public Simulation {
   ManifoldIterator keepSleepingManifolds(ManifoldIterator old, const BodyPair& before);
   bool collidePair(const BodyPair& pair, double h, Manifold& manifold);
   void listStaticBodies();
+  void rememberStartPoses();
   bool speculativeContacts() const;
   double contactDistance(const Body& a, const Body& b, double h) const;
   bool involvesAwakeBody(const Manifold& manifold) const;
@@ -127,6 +132,7 @@ class World : public Simulation {
   std::vector<int> solvedIndex_;             ///< where each of solverManifolds_ sits in manifolds_
   std::vector<BodyPair> candidatePairs_;
   std::vector<int> staticBodies_;  ///< indices of the static bodies, for internal edges
+  std::vector<Pose> startPoses_;   ///< by body: where it began the substep (continuous collision)
   /// One body in the sweep: its fattened bounds and whether it is awake.
   struct SweepEntry {
     Aabb bounds;
