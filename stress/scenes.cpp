@@ -204,8 +204,8 @@ std::vector<Vec2> stackPlaces(int boxes) {
 
 /// Tunnelling: a ball of this radius (m) flies at a static wall this thick and tall, starting
 /// this gap short of it (beyond the contact margin and Box2D's skin), without gravity, for this
-/// many steps. It tunnels once one step carries its centre past the wall's mid-plane:
-/// v·dt > gap + radius + thickness/2, v > 12 m/s at 60 Hz.
+/// many steps. Without continuous collision it tunnels once one step carries its centre past the
+/// wall's mid-plane: v·dt > gap + radius + thickness/2, v > 12 m/s at 60 Hz.
 constexpr double kBulletRadius = 0.1;
 constexpr double kWallThickness = 0.1;
 constexpr double kWallHeight = 4.0;
@@ -576,18 +576,19 @@ void motionScenes(std::vector<StressScene>& scenes) {
        {},
        {"sequential − accumulation + 4 substeps"},
        {}});
-  scenes.push_back({"tunnelling",
-                    "Fast small ball against a thin wall",
-                    {"speed", "m/s", 1, 1000, KnobScale::Logarithmic},
-                    {"how far the ball's centre got past the wall's mid-plane (m, capped at 1)",
-                     0.0, "the ball appears on the far side of the wall", false},
-                    tunnelling,
-                    probeOf<WallProbe>(1, 0.0, kThroughCap),
-                    {},
-                    {},
-                    {"sequential + speculative contacts", "sequential + 4 substeps",
-                     "soft step − speculative contacts"},
-                    {}});
+  scenes.push_back(
+      {"tunnelling",
+       "Fast small ball against a thin wall",
+       {"speed", "m/s", 1, 1000, KnobScale::Logarithmic},
+       {"how far the ball's centre got past the wall's mid-plane (m, capped at 1)", 0.0,
+        "the ball appears on the far side of the wall", false},
+       tunnelling,
+       probeOf<WallProbe>(1, 0.0, kThroughCap),
+       {},
+       {},
+       {"sequential − continuous", "sequential − continuous + speculative contacts",
+        "sequential − continuous + 4 substeps", "soft step − speculative contacts − continuous"},
+       {}});
   scenes.push_back({"slope_landing",
                     "Landing on a slope that holds",
                     {"drop height", "m", 0.0, 1.0, KnobScale::Linear},

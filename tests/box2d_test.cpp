@@ -107,6 +107,69 @@ TEST_CASE("a polygon of more than 8 vertices is rejected with the reason", "[box
   CHECK_THROWS_WITH(Box2dSimulation(scene), Catch::Contains("at most 8 vertices"));
 }
 
+namespace {
+
+/// Box2D's simulation of one body of `shape` above the ground, stepped a few times: "" when it
+/// runs, else the message with which the shape was refused. Box2D asserting would end the test
+/// program.
+std::string runOrRefusal(const Shape& shape, double density = 1.0) {
+  Scene scene = sceneWith("shape", 0);
+  scene.bodies.push_back(ground(0.5));
+  BodyDef body;
+  body.name = "shape";
+  body.shape = shape;
+  body.density = density;
+  body.position = Vec2(0.0, 2.0);
+  scene.bodies.push_back(body);
+  try {
+    Box2dSimulation simulation(scene);
+    for (int step = 0; step < 3; ++step) simulation.step();
+  } catch (const std::invalid_argument& refused) {
+    return refused.what();
+  } catch (const NonFiniteState& stopped) {
+    return stopped.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("every shape Box2D 2.4.1 cannot take is refused first, naming Box2D's limit",
+          "[box2d][shape]") {
+  // b2PolygonShape::Set welds vertices closer than b2_linearSlop / 2 = 2.5 mm and asserts when
+  // fewer than three remain: a 0.1 mm box, and a 2 m plank 1 mm thick.
+  CHECK_THAT(runOrRefusal(makeBox(1e-4, 1e-4)), Catch::Contains("b2_linearSlop / 2"));
+  CHECK_THAT(runOrRefusal(makeBox(2.0, 1e-3)), Catch::Contains("b2_linearSlop / 2"));
+  // Its centroid asserts an area above b2_epsilon: a sliver of a triangle 1 m long, 0.1 µm high.
+  const Shape sliver = makePolygon({{0.0, 0.0}, {1.0, 0.0}, {0.5, 1e-7}}).shape;
+  CHECK_THAT(runOrRefusal(sliver), Catch::Contains("b2_epsilon"));
+  // A mass past a float's range becomes infinite, its inertia not a number, and the assertion
+  // on the inertia aborts.
+  CHECK_THAT(runOrRefusal(makeCircle(1e20)), Catch::Contains("single precision"));
+  CHECK_THAT(runOrRefusal(makeBox(1.0, 1.0), 1e39), Catch::Contains("single precision"));
+  // At 2.5 mm apart and above, and for circles of any size a float holds, Box2D runs.
+  CHECK(runOrRefusal(makeBox(0.003, 0.003)).empty());
+  CHECK(runOrRefusal(makeCircle(1e-6)).empty());
+}
+
+TEST_CASE("Box2D runs or refuses boxes, circles and polygons of every size, never aborting",
+          "[box2d][shape][property]") {
+  // Sizes from 1 µm to 10 km a decade apart, aspect ratios to 1000: each runs, is refused
+  // naming a Box2D limit, or stops at a non-finite body.
+  for (double size = 1e-6; size <= 1e4; size *= 10.0) {
+    for (double aspect : {1.0, 30.0, 1000.0}) {
+      INFO("size " << size << ", aspect " << aspect);
+      for (const Shape& shape :
+           {makeBox(size, size / aspect), makeCircle(size),
+            makePolygon({{0.0, 0.0}, {size, 0.0}, {0.5 * size, size / aspect}}).shape}) {
+        const std::string outcome = runOrRefusal(shape);
+        CHECK((outcome.empty() || outcome.find("Box2D") != std::string::npos ||
+               outcome.find("non-finite") != std::string::npos));
+      }
+    }
+  }
+}
+
 TEST_CASE("Box2D's contacts read back in our sign convention", "[box2d][convention]") {
   constexpr double kSlope = 0.5;  // rad: tan 0.5 = 0.55 > friction 0.3, so the box slides
   Scene scene = sceneWith("convention", 30);

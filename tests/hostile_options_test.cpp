@@ -76,11 +76,13 @@ TEST_CASE("one file named twice, by --csv and --contacts, is refused before the 
 
 TEST_CASE("every output option creates the directories its path needs", "[outputs]") {
   const Scratch scratch;
-  const Outcome run = i2d("run " + kBox + " --csv " + (scratch / "a/b/run.csv") + " --plots " +
-                              (scratch / "c/d") + " --frames " + (scratch / "e/f"),
-                          scratch);
+  const Outcome run =
+      i2d("run " + kBox + " --csv " + (scratch / "a/b/run.csv") + " --plots " + (scratch / "c/d") +
+              " --frames " + (scratch / "e/f") + " --contacts " + (scratch / "m/n/contacts.csv"),
+          scratch);
   CHECK(run.exitCode == 0);
   CHECK(fs::is_regular_file(scratch / "a/b/run.csv"));
+  CHECK(fs::is_regular_file(scratch / "m/n/contacts.csv"));
   CHECK(fs::is_regular_file(scratch / "c/d/resting_box_kinetic.png"));
   CHECK(fs::is_regular_file(scratch / "e/f/resting_box/resting_box_00000.png"));
   const Outcome errors =

@@ -436,6 +436,19 @@ TEST_CASE("run --trace-step writes one frame per solver event of that step", "[i
   CHECK(box2d.err.rfind("error: solver box2d reports no solver events", 0) == 0);
 }
 
+TEST_CASE("run --trace-step past the end of the run is refused with the run's length",
+          "[i2d][trace]") {
+  const TemporaryDirectory directory;
+  const std::string frames = directory / "frames";
+  const Outcome outcome =
+      i2d("run " + kScenes + "resting_box.toml --steps 30 --trace-step 31 " + "--frames " + frames);
+  CHECK(outcome.exitCode == 2);
+  CHECK(outcome.err ==
+        "error: --trace-step 31 is past the end of the run, which has 30 steps; trace a step "
+        "from 1 to 30 or give more with --steps\n");
+  CHECK_FALSE(fs::exists(frames));
+}
+
 TEST_CASE("compare writes the solvers' frames side by side, labelled, and a sheet",
           "[i2d][compare]") {
   const TemporaryDirectory directory;

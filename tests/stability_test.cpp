@@ -139,22 +139,28 @@ TEST_CASE(
   CHECK(holds("large_dt", "box2d", 1.0 / 15));
 }
 
-TEST_CASE("a fast small ball tunnels through a thin wall once one step jumps past its middle",
-          "[stability][tunnelling][speculative][substeps]") {
-  // One step carries the centre past the wall's mid-plane above v = (gap + r + t/2)/dt = 12 m/s.
+TEST_CASE(
+    "a fast small ball tunnels through a thin wall once one step jumps past its middle, "
+    "unless continuous collision stops it",
+    "[stability][tunnelling][continuous][speculative][substeps]") {
+  // At the defaults continuous collision stops the ball at the wall at every speed searched.
   for (const Method& method : baseMethods()) {
-    if (method.label == "soft step") continue;
+    if (method.label == "box2d") continue;  // its time of impact pass is off, for comparison
     INFO(method.label);
-    CHECK(!runStress(findStressScene("tunnelling"), method, 11.0).failed);
-    CHECK(runStress(findStressScene("tunnelling"), method, 13.0).failed);
+    CHECK(!runStress(findStressScene("tunnelling"), method, 1000.0).failed);
   }
-  CHECK(holds("tunnelling", "soft step − speculative contacts", 11.0));
-  CHECK(fails("tunnelling", "soft step − speculative contacts", 13.0));
-  CHECK(holds("tunnelling", "sequential + speculative contacts", 1000));
-  CHECK(holds("tunnelling", "soft step", 1000));  // its contacts are speculative, as Box2D v3's
+  // Without it, one step carries the centre past the wall's mid-plane above
+  // v = (gap + r + t/2)/dt = 12 m/s.
+  CHECK(holds("tunnelling", "sequential − continuous", 11.0));
+  CHECK(fails("tunnelling", "sequential − continuous", 13.0));
+  CHECK(holds("tunnelling", "box2d", 11.0));
+  CHECK(fails("tunnelling", "box2d", 13.0));
+  CHECK(holds("tunnelling", "soft step − speculative contacts − continuous", 11.0));
+  CHECK(fails("tunnelling", "soft step − speculative contacts − continuous", 13.0));
+  CHECK(holds("tunnelling", "sequential − continuous + speculative contacts", 1000));
   SECTION("four sub-steps move the breaking point four times further") {
-    CHECK(holds("tunnelling", "sequential + 4 substeps", 44));
-    CHECK(fails("tunnelling", "sequential + 4 substeps", 52));
+    CHECK(holds("tunnelling", "sequential − continuous + 4 substeps", 44));
+    CHECK(fails("tunnelling", "sequential − continuous + 4 substeps", 52));
   }
 }
 
@@ -179,14 +185,14 @@ TEST_CASE(
 
 TEST_CASE("the search finds the tunnelling speed a student can derive", "[stability][search]") {
   const BreakingPoint point =
-      findBreakingPoint(findStressScene("tunnelling"), findMethod("sequential"));
+      findBreakingPoint(findStressScene("tunnelling"), findMethod("sequential − continuous"));
   REQUIRE(point.verdict == Verdict::Breaks);
   const double derived = (0.05 + 0.1 + 0.05) * 60.0;
   CHECK(point.lastHeld < derived);
   CHECK(point.firstFailed > derived);
   CHECK(point.firstFailed / point.lastHeld < 1.12);  // 6 halvings of 1..1000
   const BreakingPoint again =
-      findBreakingPoint(findStressScene("tunnelling"), findMethod("sequential"));
+      findBreakingPoint(findStressScene("tunnelling"), findMethod("sequential − continuous"));
   CHECK(again.firstFailed == point.firstFailed);
 }
 

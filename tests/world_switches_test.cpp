@@ -1,5 +1,6 @@
 // The world-level switches for hard scenes (settings.h, docs/rigid-bodies.md): substeps split a
-// step into equal smaller ones; speculative contacts stop a fast small body at a thin wall.
+// step into equal smaller ones; continuous collision and speculative contacts each stop a fast
+// small body at a thin wall.
 #include <catch2/catch.hpp>
 
 #include "solver_scenes.h"
@@ -32,11 +33,12 @@ constexpr double kWallHalfThickness = 0.05;  ///< m: a 0.1 m thick wall
 constexpr double kBallRadius = 0.05;         ///< m
 constexpr double kBallSpeed = 200.0;         ///< m/s: 3.3 m a step at 60 Hz
 
-/// A small fast ball flying at a thin static wall, without gravity.
+/// A small fast ball flying at a thin static wall, without gravity, continuous collision off.
 Scene bulletScene(const std::string& solver, bool speculative) {
   Scene scene;
   scene.solver = solver;
   scene.world.gravity = Vec2::Zero();
+  scene.world.continuous = false;
   scene.world.speculativeContacts = speculative;
   BodyDef wall;
   wall.type = BodyType::Static;
@@ -92,6 +94,39 @@ TEST_CASE("with speculative contacts the same ball stops at the wall", "[world][
   const double margin = WorldSettings{}.contactMargin;
   for (const std::string solver : {"micro", "sequential", "reference"}) {
     auto world = buildWorld(bulletScene(solver, true));
+    for (int step = 0; step < 30; ++step) {
+      world->step();
+      INFO(solver << ", step " << step);
+      REQUIRE(world->bodies()[1].position.x() <= touching + margin);
+    }
+    // Without restitution the ball ends at rest against the wall.
+    CHECK(world->bodies()[1].position.x() == Approx(touching).margin(margin));
+    CHECK(world->bodies()[1].velocity.x() == Approx(0.0).margin(1e-6));
+  }
+}
+
+TEST_CASE("at the defaults a 0.1 m ball at 40 m/s stops at a 0.2 m wall at 60 Hz",
+          "[world][continuous]") {
+  // 0.67 m a step: without continuous collision its centre passes the wall's mid-plane in one.
+  constexpr double wallX = 2.0;
+  constexpr double halfThickness = 0.1;
+  constexpr double radius = 0.1;
+  const double touching = wallX - halfThickness - radius;
+  const double margin = WorldSettings{}.contactMargin;
+  for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
+    Scene scene;
+    scene.solver = solver;
+    scene.world.gravity = Vec2::Zero();
+    BodyDef wall;
+    wall.type = BodyType::Static;
+    wall.shape = makeBox(2.0 * halfThickness, 2.0);
+    wall.position = Vec2(wallX, 0.0);
+    scene.bodies.push_back(wall);
+    BodyDef ball;
+    ball.shape = makeCircle(radius);
+    ball.velocity = Vec2(40.0, 0.0);
+    scene.bodies.push_back(ball);
+    auto world = buildWorld(scene);
     for (int step = 0; step < 30; ++step) {
       world->step();
       INFO(solver << ", step " << step);

@@ -96,9 +96,9 @@ options (a value follows the option or '=': --steps 100, --steps=100):
                         _potential.png, _total.png (energy), _contacts.png (contact points),
                         _penetration.png (largest); with --trace-step, the velocity error each
                         solver event of the step removes, DIR/<scene>_stepNNNNN_velocity_error.png
-  --trace-step N        with --frames: run to step N (N >= 1) and draw one frame per solver
-                        event of that step, DIR/<scene>/<scene>_stepNNNNN_00000.png, ..., and
-                        its sheet <scene>_stepNNNNN_sheet.png; box2d cannot be traced
+  --trace-step N        with --frames: run to step N (1 to the run's steps) and draw one frame
+                        per solver event of that step, DIR/<scene>/<scene>_stepNNNNN_00000.png,
+                        ..., and its sheet <scene>_stepNNNNN_sheet.png; box2d cannot be traced
   --error-vs-reference FILE
                         at every step also solve the method's pre-solve state exactly (the
                         global reference) and write solve,t,points,impulse_error,violation to

@@ -1,6 +1,6 @@
-// Where i2d's outputs go. Every output option (--csv, --error-vs-reference, --plots, --frames)
-// creates the directories its path needs, as `mkdir -p` does, once the scene has been read and
-// before the run starts; a directory that cannot be created is one error line and exit 1.
+// Where i2d's outputs go. Every output option (--csv, --contacts, --error-vs-reference, --plots,
+// --frames) creates the directories its path needs, as `mkdir -p` does, once the scene has been
+// read and before the run starts; a directory that cannot be created is one error line and exit 1.
 #pragma once
 
 #include <filesystem>

@@ -105,6 +105,7 @@ double runSteps(Simulation& simulation, long steps, Recorders& recorders) {
 Recorders openRecorders(const RunOptions& options, const SceneFile& scene) {
   checkVideoPossible(options.frames);
   createOutputDirectory(directoryOf(options.csvPath), "--csv");
+  createOutputDirectory(directoryOf(options.contactsPath), "--contacts");
   if (options.plots) preparePlotDirectory(*options.plots);
   Recorders recorders;
   recorders.every = options.every;
@@ -136,6 +137,15 @@ std::string plotTracedStep(const RunOptions& options, const SceneFile& scene) {
   return writeTracePlot(*options.plots, scene.name, *options.traceStep, events);
 }
 
+/// --trace-step N must name a step of the run, before anything is written.
+void checkTraceStepInRun(long step, long steps) {
+  if (step <= steps) return;
+  throw UsageError("--trace-step " + std::to_string(step) +
+                   " is past the end of the run, which has " + std::to_string(steps) +
+                   " steps; trace a step from 1 to " + std::to_string(steps) +
+                   " or give more with --steps");
+}
+
 /// --trace-step N: runs to step N and draws each solver event of it, then its sheet.
 int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& simulation) {
   if (simulation.solverName() == impulse2d::kBox2dName) {
@@ -143,8 +153,8 @@ int traceCommand(const RunOptions& options, const SceneFile& scene, Simulation& 
         "solver box2d reports no solver events, so it cannot be traced; trace "
         "micro, sequential or reference");
   }
-  if (options.plots) preparePlotDirectory(*options.plots);
   const long step = *options.traceStep;
+  if (options.plots) preparePlotDirectory(*options.plots);
   impulse2d::render::RenderSettings settings = renderSettings(options.frames);
   settings.headsUpLines = settings.traceHeadsUpLines;
   const impulse2d::render::FrameRenderer renderer(sceneCamera(scene, options.frames, settings),
@@ -171,6 +181,7 @@ int runCommand(const RunOptions& options) {
   if (options.errorVsReferencePath) return errorVsReferenceRun(options);
   const SceneFile scene = loadScene(options.scene);
   warnAboutStartingOverlaps(scene, std::cerr);
+  if (options.traceStep) checkTraceStepInRun(*options.traceStep, scene.steps);
   createOutputDirectory(options.frames.directory, "--frames");
   createOutputDirectory(options.plots, "--plots");
   std::unique_ptr<Simulation> simulation = impulse2d::makeSimulation(scene);

@@ -277,6 +277,21 @@ bool normalRunsToCentre(const Shape& a, const Shape& b, const Manifold& manifold
   return circleRegionOf(manifold.points[0].id) == CircleRegion::Vertex;
 }
 
+double separationFromPoint(const Body& body, const Vec2& point) {
+  if (body.shape.type == ShapeType::Circle) {
+    return (point - body.position).norm() - body.shape.radius;
+  }
+  return deepestFaceToPoint(body.shape, body.toLocal(point)).separation;
+}
+
+double separation(const Body& a, const Body& b) {
+  const bool circleA = a.shape.type == ShapeType::Circle;
+  const bool circleB = b.shape.type == ShapeType::Circle;
+  if (circleB) return separationFromPoint(a, b.position) - b.shape.radius;
+  if (circleA) return separationFromPoint(b, a.position) - a.shape.radius;
+  return std::max(findMaxSeparation(a, b).separation, findMaxSeparation(b, a).separation);
+}
+
 int collide(const Body& a, const Body& b, double margin, Manifold& manifold) {
   const bool circleA = a.shape.type == ShapeType::Circle;
   const bool circleB = b.shape.type == ShapeType::Circle;

@@ -9,6 +9,8 @@ std::vector<SettingField> describe(WorldSettings& s) {
           {"contact_margin", &s.contactMargin},
           {"substeps", &s.substeps},
           {"speculative_contacts", &s.speculativeContacts},
+          {"continuous", &s.continuous},
+          {"refuse_internal_edges", &s.refuseInternalEdges},
           {"sleeping", &s.sleeping},
           {"sleep_linear_speed", &s.sleepLinearSpeed},
           {"sleep_angular_speed", &s.sleepAngularSpeed},

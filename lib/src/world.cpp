@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "impulse2d/collide.h"
+#include "impulse2d/continuous.h"
+#include "impulse2d/internal_edges.h"
 
 namespace impulse2d {
 namespace {
@@ -101,8 +103,12 @@ void World::substep(double h) {
   }
   findContacts(h);
   wakeTouchedIslands();
+  rememberStartPoses();
   WorldStages stages(*this, h);
   solver_->step({bodies_, manifoldsToSolve(), h, observer_, settings_.gravity}, stages);
+  if (settings_.continuous) {
+    stopAtTimeOfImpact(bodies_, startPoses_, staticBodies_, 0.5 * settings_.contactMargin);
+  }
   storeSolvedManifolds();
   stopAtNonFiniteBody();
   putRestingIslandsToSleep(h);
@@ -131,6 +137,7 @@ void World::findContacts(double h) {
   previousManifolds_.swap(manifolds_);
   manifolds_.clear();
   findCandidatePairs(h);
+  listStaticBodies();
   ManifoldIterator old = previousManifolds_.cbegin();
   for (const BodyPair& pair : candidatePairs_) {
     old = keepSleepingManifolds(old, pair);
@@ -167,10 +174,31 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   manifold.bodyB = pair.second;
   const double distance = contactDistance(a, b, h);
   if (collide(a, b, distance, manifold) == 0) return false;
+  if (settings_.refuseInternalEdges &&
+      dropInternalEdgePoints(bodies_, staticBodies_, manifold) == 0) {
+    return false;
+  }
   manifold.found = {a.angle, b.angle, a.toLocal(b.position), distance};
   manifold.friction = mixFriction(a.friction, b.friction);
   manifold.restitution = mixRestitution(a.restitution, b.restitution);
   return true;
+}
+
+// Where each body starts the substep, for continuous collision.
+void World::rememberStartPoses() {
+  if (!settings_.continuous) return;
+  startPoses_.resize(bodies_.size());
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    startPoses_[i] = {bodies_[i].position, bodies_[i].angle};
+  }
+}
+
+// The static bodies a contact on one of them may meet a flush neighbour among (internal edges).
+void World::listStaticBodies() {
+  staticBodies_.clear();
+  for (int i = 0; i < int(bodies_.size()); ++i) {
+    if (bodies_[i].isStatic()) staticBodies_.push_back(i);
+  }
 }
 
 // Speculative contacts, by the world's setting or because the solver finds its contacts ahead.

@@ -12,6 +12,14 @@ namespace impulse2d {
 /// margin (penetration > −margin). Returns pointCount; 0 when they do not touch.
 int collide(const Body& a, const Body& b, double margin, Manifold& manifold);
 
+/// m. How far the point stands outside the body: exact for a circle and in front of a polygon's
+/// face, less than the distance beside a polygon's corner; < 0 inside.
+double separationFromPoint(const Body& body, const Vec2& point);
+
+/// m. A lower bound on the distance between the two bodies' surfaces, by separating axes: exact
+/// for two circles and where a face is nearest, less beside corners; ≤ 0 when they overlap.
+double separation(const Body& a, const Body& b);
+
 /// Whether the manifold collide(a, b, …) found has a normal that runs to a circle's centre from
 /// the other circle's centre or from a polygon's vertex: such a normal turns as the bodies move
 /// past each other, where a face's normal only turns with its body.

@@ -27,6 +27,15 @@ struct WorldSettings {
   /// by |v|·dt and a pair keeps contact points while the gap is under contactMargin + |vB−vA|·dt,
   /// so the solver can stop a fast small ball at a thin wall instead of letting it tunnel.
   bool speculativeContacts = false;
+  /// Continuous collision against static bodies (continuous.h): a body whose substep would carry
+  /// the core of it (half its smallest extent) into a static body is stopped where it reaches
+  /// that body, its velocity kept for the next step's contact. Off, a 0.1 m ball faster than
+  /// 12 m/s passes through a 0.1 m wall at 60 Hz under the rigid methods. Box2D's word.
+  bool continuous = true;
+  /// Refuse contacts on internal edges (internal_edges.h): where static pieces lie flush, a
+  /// moving body meets one surface. Off, a box sliding across the seam of two floor tiles catches
+  /// on the second tile's side face, and a disc rolling over it hops off the corner.
+  bool refuseInternalEdges = true;
   /// Islands of bodies at rest go to sleep: they are not integrated, their contacts are neither
   /// recomputed nor solved, until an awake body touches them or the user pushes one.
   bool sleeping = false;

@@ -10,9 +10,10 @@
 //                          contacts are found ahead), then the narrow phase for each overlapping
 //                          pair with an awake body; a pair of sleeping or static bodies keeps its
 //                          manifold as it was. Impulses of the last step are carried over to
-//                          points with the same feature id (for warm starting). A pair whose last
-//                          manifold the solver keeps (ContactSolver::keepManifold) is not found
-//                          anew.
+//                          points with the same feature id (for warm starting). A point on an
+//                          internal edge of flush static pieces is refused (internal_edges.h).
+//                          A pair whose last manifold the solver keeps
+//                          (ContactSolver::keepManifold) is not found anew.
 //   3. wakeTouchedIslands  islands are the dynamic bodies joined by contacts (static bodies join
 //                          none); an island with an awake body wakes whole.
 //   4. the solver's step, given only the manifolds with an awake body. By default:
@@ -26,6 +27,9 @@
 //      solvePositions      the solver removes what penetration remains.
 //      refreshCaches       awake bodies: rotation from the angle and bounds, once per substep.
 //      A method that moves the bodies within its own substeps calls clearForces instead.
+//   then stopAtTimeOfImpact (with continuous on): an awake body whose motion in the substep
+//                          would carry its core into a static body is moved back to where it
+//                          reaches it (continuous.h).
 //   5. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
 //                          thresholds for timeToSleep sleeps; its velocities become zero.
 #pragma once
@@ -34,6 +38,7 @@
 #include <utility>
 #include <vector>
 
+#include "impulse2d/continuous.h"
 #include "impulse2d/simulation.h"
 
 namespace impulse2d {
@@ -101,6 +106,8 @@ class World : public Simulation {
   void layOutSweep();
   ManifoldIterator keepSleepingManifolds(ManifoldIterator old, const BodyPair& before);
   bool collidePair(const BodyPair& pair, double h, Manifold& manifold);
+  void listStaticBodies();
+  void rememberStartPoses();
   bool speculativeContacts() const;
   double contactDistance(const Body& a, const Body& b, double h) const;
   bool involvesAwakeBody(const Manifold& manifold) const;
@@ -124,6 +131,8 @@ class World : public Simulation {
   std::vector<Manifold> solverManifolds_;    ///< the awake ones, when some sleep
   std::vector<int> solvedIndex_;             ///< where each of solverManifolds_ sits in manifolds_
   std::vector<BodyPair> candidatePairs_;
+  std::vector<int> staticBodies_;  ///< indices of the static bodies, for internal edges
+  std::vector<Pose> startPoses_;   ///< by body: where it began the substep (continuous collision)
   /// One body in the sweep: its fattened bounds and whether it is awake.
   struct SweepEntry {
     Aabb bounds;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include <box2d/box2d.h>
@@ -23,22 +24,56 @@ Vec2 fromBox2d(const b2Vec2& v) {
   return Vec2(v.x, v.y);
 }
 
+/// Box2D 2.4.1's b2PolygonShape::Set asserts, aborting the program, where it cannot make a
+/// polygon; each of these refuses such a polygon first, naming Box2D's limit. Set welds
+/// vertices closer than half the linear slop, so fewer than three may remain.
+void refuseWeldedVertices(const std::vector<b2Vec2>& points, const std::string& bodyName) {
+  const float weld = 0.5f * b2_linearSlop;
+  for (size_t i = 0; i < points.size(); ++i) {
+    for (size_t j = i + 1; j < points.size(); ++j) {
+      const float apart = b2Distance(points[i], points[j]);
+      if (apart >= weld) continue;
+      throw std::invalid_argument("body '" + bodyName +
+                                  "': Box2D welds polygon vertices closer than half its linear " +
+                                  "slop (b2_linearSlop / 2 = " + std::to_string(weld) +
+                                  " m); vertices " + std::to_string(i) + " and " +
+                                  std::to_string(j) + " are " + std::to_string(apart) + " m apart");
+    }
+  }
+}
+
+/// The area of the polygon as Box2D's ComputeCentroid sums it, in floats from the first vertex;
+/// Set asserts that it exceeds b2_epsilon.
+void refuseThinPolygon(const std::vector<b2Vec2>& points, const std::string& bodyName) {
+  float area = 0.0f;
+  for (size_t i = 1; i + 1 < points.size(); ++i) {
+    area += 0.5f * b2Cross(points[i] - points[0], points[i + 1] - points[0]);
+  }
+  if (std::isfinite(area) && area > b2_epsilon) return;
+  std::ostringstream message;
+  message << "body '" << bodyName << "': Box2D needs a polygon's area, in single precision, "
+          << "finite and above b2_epsilon (" << b2_epsilon << " m²); it is " << area << " m²";
+  throw std::invalid_argument(message.str());
+}
+
 b2PolygonShape polygonFor(const Shape& shape, const std::string& bodyName) {
   const int count = int(shape.vertices.size());
   if (count > b2_maxPolygonVertices) {
     throw std::invalid_argument("body '" + bodyName + "': Box2D polygons hold at most " +
-                                std::to_string(b2_maxPolygonVertices) + " vertices, not " +
-                                std::to_string(count));
+                                std::to_string(b2_maxPolygonVertices) +
+                                " vertices (b2_maxPolygonVertices), not " + std::to_string(count));
   }
   std::vector<b2Vec2> points;
   for (const Vec2& vertex : shape.vertices) points.push_back(toBox2d(vertex));
+  refuseWeldedVertices(points, bodyName);
+  refuseThinPolygon(points, bodyName);
   b2PolygonShape polygon;
-  polygon.Set(points.data(), count);  // recomputes the convex hull, welding close vertices
+  polygon.Set(points.data(), count);  // recomputes the convex hull
   if (polygon.m_count != count) {
-    throw std::invalid_argument("body '" + bodyName + "': Box2D welds vertices closer than " +
-                                std::to_string(0.5 * b2_linearSlop) + " m; its hull has " +
+    throw std::invalid_argument("body '" + bodyName + "': Box2D's convex hull of it has " +
                                 std::to_string(polygon.m_count) + " of the " +
-                                std::to_string(count) + " vertices");
+                                std::to_string(count) +
+                                " vertices (it drops a vertex in line with its neighbours)");
   }
   return polygon;
 }
@@ -71,6 +106,22 @@ FrictionState frictionState(double normalImpulse, double tangentImpulse, double 
   const double limit = friction * normalImpulse;
   return std::abs(tangentImpulse) >= (1.0 - kSlidingTolerance) * limit ? FrictionState::Dynamic
                                                                        : FrictionState::Static;
+}
+
+/// kg, kg m². Box2D sums a body's mass and rotational inertia in floats and asserts the inertia
+/// about the centre of mass is positive: one past a float's 3.4e38 becomes infinite, then not a
+/// number, and the assertion aborts the program. This bound keeps a factor of three below it.
+constexpr double kLargestBox2dMass = 1e38;
+
+void refuseBeyondSinglePrecisionMass(const Body& body) {
+  if (body.isStatic() || (body.mass < kLargestBox2dMass && body.inertia < kLargestBox2dMass)) {
+    return;
+  }
+  std::ostringstream message;
+  message << "body '" << body.name << "': Box2D holds mass and rotational inertia in single "
+          << "precision, below " << kLargestBox2dMass << "; this body's are " << body.mass
+          << " kg and " << body.inertia << " kg m²";
+  throw std::invalid_argument(message.str());
 }
 
 /// Box2D holds a body's state in floats, and asserts that each is finite: a state beyond a
@@ -117,6 +168,7 @@ Box2dSimulation::Box2dSimulation(const Scene& scene, const Box2dOptions& options
     bodyDef.angularVelocity = float(bodies_[i].angularVelocity);
     bodyDef.userData.pointer = i;
     stopUnlessSinglePrecision(bodyDef, bodies_[i].name);
+    refuseBeyondSinglePrecisionMass(bodies_[i]);
     b2Body* body = world_->world.CreateBody(&bodyDef);
     addFixture(*body, def, restitutionThreshold);
     world_->bodies.push_back(body);
