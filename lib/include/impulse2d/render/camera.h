@@ -72,6 +72,7 @@ double legendStripHeight(const RenderSettings& settings, int frameHeight);
 /// frame, at the scale that fits the first state; zoom multiplies the scale.
 class RunCamera {
  public:
+  /// A camera for frames `width` × `height` pixels that shows `view`; no state added yet.
   RunCamera(const ViewDef& view, const RenderSettings& settings, int width, int height);
   /// Takes in one recorded state's bodies (the first gives the static bodies). Throws
   /// std::invalid_argument when the view follows a body these bodies lack.

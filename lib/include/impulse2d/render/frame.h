@@ -155,13 +155,13 @@ using SceneExtra = std::function<void(Drawing&, DrawnKinds&)>;
 /// What a frame of a simulation shows, taken as the simulation stands, so that it can be drawn
 /// once the run is over and its camera known.
 struct FrameState {
-  std::vector<Body> bodies;
-  std::vector<Manifold> manifolds;  ///< at step 0, the starting contacts (startingContacts)
-  SceneState scene;
+  std::vector<Body> bodies;          ///< the bodies as the simulation stands
+  std::vector<Manifold> manifolds;   ///< at step 0, the starting contacts (startingContacts)
+  SceneState scene;                  ///< the time and gravity its loads are drawn at
   std::vector<std::string> headsUp;  ///< headsUpLines
-  std::string caption;
-  Vec2 gravity = Vec2::Zero();  ///< m/s², for the force scale
-  double impulseTime = 0.0;     ///< s: a (sub)step, over which the manifolds' impulses act
+  std::string caption;               ///< the frame's caption on a contact sheet
+  Vec2 gravity = Vec2::Zero();       ///< m/s², for the force scale
+  double impulseTime = 0.0;          ///< s: a (sub)step, over which the manifolds' impulses act
 };
 
 /// The frame state of a simulation as it stands, for a scene of that name.
