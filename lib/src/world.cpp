@@ -51,6 +51,12 @@ void fallAsleep(Body& body) {
 class World::WorldStages : public StepStages {
  public:
   WorldStages(World& world, double h) : world_(world), h_(h) {}
+  StepContext findContacts(const ContactFinding& finding) override {
+    world_.findContacts(h_, finding);
+    world_.wakeTouchedIslands();
+    return {world_.bodies_, world_.manifoldsToSolve(), h_, world_.observer_,
+            world_.settings_.gravity};
+  }
   void integrateVelocities() override {
     world_.integrateVelocities(h_);
     if (world_.observer_) world_.observer_->onVelocitiesChanged(world_.bodies_);
@@ -59,6 +65,7 @@ class World::WorldStages : public StepStages {
   void clearForces() override { world_.clearForces(); }
   void refreshCaches() override { world_.refreshCaches(); }
   void stopAtNonFiniteBody() override { world_.stopAtNonFiniteBody(); }
+  void storeImpulses() override { world_.storeSolvedManifolds(); }
 
  private:
   World& world_;
@@ -99,11 +106,8 @@ void World::substep(double h) {
     statistics_.keptManifolds = int(manifolds_.size());
     return;
   }
-  findContacts(h);
-  wakeTouchedIslands();
   WorldStages stages(*this, h);
-  solver_->step({bodies_, manifoldsToSolve(), h, observer_, settings_.gravity}, stages);
-  storeSolvedManifolds();
+  solver_->step(stages);
   stopAtNonFiniteBody();
   putRestingIslandsToSleep(h);
 }
@@ -120,14 +124,15 @@ void World::wakeDisturbedBodies() {
   }
 }
 
-void World::findContacts() {
+void World::findContacts(const ContactFinding& finding) {
   statistics_ = StepStatistics{};
-  findContacts(settings_.dt / settings_.substeps);
+  findContacts(settings_.dt / settings_.substeps, finding);
 }
 
 // Candidate pairs and the last substep's manifolds are both sorted by (A, B), so one merge walk
 // keeps the manifolds of sleeping pairs and carries impulses over to the recomputed ones.
-void World::findContacts(double h) {
+void World::findContacts(double h, const ContactFinding& finding) {
+  finding_ = finding;
   previousManifolds_.swap(manifolds_);
   manifolds_.clear();
   findCandidatePairs(h);
@@ -136,7 +141,7 @@ void World::findContacts(double h) {
     old = keepSleepingManifolds(old, pair);
     const bool hadManifold = old != previousManifolds_.cend() && keyOf(*old) == pair;
     Manifold manifold;
-    if (hadManifold && solver_->keepManifold(*old, bodies_, manifold)) {
+    if (hadManifold && finding.keeping && finding.keeping->keep(*old, bodies_, manifold)) {
       manifolds_.push_back(manifold);
       ++statistics_.reusedManifolds;
       continue;
@@ -173,9 +178,9 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   return true;
 }
 
-// Speculative contacts, by the world's setting or because the solver finds its contacts ahead.
+// Speculative contacts, by the world's setting or because the method finds its contacts ahead.
 bool World::speculativeContacts() const {
-  return settings_.speculativeContacts || solver_->findsContactsAhead();
+  return settings_.speculativeContacts || finding_.ahead;
 }
 
 // Speculative contacts: the gap the pair can close within the substep is added to the margin.
@@ -286,11 +291,7 @@ void World::integrateVelocities(double h) {
   for (Body& body : bodies_) {
     if (!body.isAwake()) continue;
     ++statistics_.awakeBodies;
-    body.lastAcceleration = settings_.gravity + body.inverseMass * body.force;
-    body.velocity += h * body.lastAcceleration;
-    body.angularVelocity += h * body.inverseInertia * body.torque;
-    body.force.setZero();
-    body.torque = 0.0;
+    body.integrateVelocity(settings_.gravity, h);
   }
 }
 

@@ -210,6 +210,18 @@ class ColumnPairBlocks {
 
 }  // namespace
 
+// The step of sequential impulses, with the exact impulses in place of the sweeps.
+void ReferenceSolver::step(StepStages& stages) {
+  const StepContext context = stages.findContacts({});
+  stages.integrateVelocities();
+  stages.stopAtNonFiniteBody();
+  solveVelocities(context);
+  stages.integratePositions();
+  solvePositions(context);
+  stages.refreshCaches();
+  stages.storeImpulses();
+}
+
 void ReferenceSolver::solveVelocities(const StepContext& context) {
   const Eigen::VectorXd impulses = exactImpulses(context);
   if (!rows_.empty()) applyImpulses(context, impulses);  // else nothing touches: nothing to solve
