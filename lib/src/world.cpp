@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 #include "impulse2d/collide.h"
@@ -256,21 +255,16 @@ void World::layOutSweep() {
 // Islands by union-find: every contact between two dynamic bodies joins their islands. Static
 // bodies join none, so a floor does not make the whole scene one island.
 void World::buildIslands() {
-  islandParent_.resize(bodies_.size());
-  std::iota(islandParent_.begin(), islandParent_.end(), 0);
+  islands_.reset(static_cast<int>(bodies_.size()));
   for (const Manifold& manifold : manifolds_) {
     if (bodies_[manifold.bodyA].isStatic() || bodies_[manifold.bodyB].isStatic()) continue;
-    islandParent_[islandOf(manifold.bodyA)] = islandOf(manifold.bodyB);
+    islands_.join(manifold.bodyA, manifold.bodyB);
   }
 }
 
-/// The root of the body's island (path halving keeps the trees flat).
+/// The root of the body's island.
 int World::islandOf(int body) {
-  while (islandParent_[body] != body) {
-    islandParent_[body] = islandParent_[islandParent_[body]];
-    body = islandParent_[body];
-  }
-  return body;
+  return islands_.root(body);
 }
 
 // An awake body touching a sleeping one wakes the sleeper's whole island, so the island is

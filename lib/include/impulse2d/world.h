@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "impulse2d/simulation.h"
+#include "impulse2d/union_find.h"
 
 namespace impulse2d {
 
@@ -131,7 +132,7 @@ class World : public Simulation {
   std::vector<int> sweepOrder_;       ///< bodies by the left edge of their bounds
   std::vector<Aabb> sweepBounds_;     ///< by body: bounds fattened for speculative contacts
   std::vector<SweepEntry> sweep_;     ///< in sweep order, so the sweep reads memory in order
-  std::vector<int> islandParent_;     ///< union-find forest of the islands, by body
+  UnionFind islands_;                 ///< the islands, by body
   std::vector<char> islandAwake_;     ///< by island root
   std::vector<double> islandRested_;  ///< s, by island root: the shortest sleep time in it
   StepStatistics statistics_;
