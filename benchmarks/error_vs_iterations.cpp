@@ -45,13 +45,20 @@ const std::vector<Variant> kVariants = {{"sequential_cold", "sequential", false}
                                         {"sequential_warm", "sequential", true},
                                         {"micro", "micro", true}};
 
-std::unique_ptr<ContactSolver> solverAt(const Variant& variant, int k, SolverSettings settings) {
+/// The variant's velocity solve at k iterations.
+std::function<void(const StepContext&)> solverAt(const Variant& variant, int k,
+                                                 SolverSettings settings) {
   settings.sequential.velocityIterations = k;
   settings.sequential.convergedImpulseChange = 0.0;  // exactly k sweeps
   settings.sequential.warmStarting = variant.warm;
   settings.micro.velocityIterationsPerContact = k;
   settings.micro.passCapWhileProgressing = false;  // at most k per point, exactly the cap
-  return makeSolver(variant.method, settings);
+  if (variant.method == "micro") {
+    auto micro = std::make_shared<MicroCollisionSolver>(settings.micro);
+    return [micro](const StepContext& context) { micro->solveVelocities(context); };
+  }
+  auto sequential = std::make_shared<SequentialImpulseSolver>(settings.sequential);
+  return [sequential](const StepContext& context) { sequential->solveVelocities(context); };
 }
 
 /// Solves made to time one variant at one k: at least this many, and until this much time has
@@ -75,28 +82,35 @@ double medianSolveTime(const std::function<void()>& solve) {
   return times[times.size() / 2];
 }
 
-/// The scene's settled pre-solve state, caught as the running solver is handed it.
+/// The scene's settled pre-solve state, caught as sequential impulses are handed it: their step,
+/// with the state copied once the velocities are integrated.
 class StateCatcher : public ContactSolver {
  public:
-  StateCatcher(std::unique_ptr<ContactSolver> running, long probe)
-      : running_(std::move(running)), probe_(probe) {}
-  std::string name() const override { return running_->name(); }
-  void solveVelocities(const StepContext& context) override {
+  StateCatcher(const SequentialImpulseSettings& settings, long probe)
+      : running_(settings), probe_(probe) {}
+  std::string name() const override { return running_.name(); }
+  void step(StepStages& stages) override {
+    const StepContext context = stages.findContacts({});
+    stages.integrateVelocities();
+    stages.stopAtNonFiniteBody();
     if (solves_++ == probe_) {
       bodies_ = context.bodies;
       manifolds_ = context.manifolds;
       dt_ = context.dt;
     }
-    running_->solveVelocities(context);
+    running_.solveVelocities(context);
+    stages.integratePositions();
+    running_.solvePositions(context);
+    stages.refreshCaches();
+    stages.storeImpulses();
   }
-  void solvePositions(const StepContext& context) override { running_->solvePositions(context); }
 
   std::vector<Body> bodies_;
   std::vector<Manifold> manifolds_;
   double dt_ = 0.0;
 
  private:
-  std::unique_ptr<ContactSolver> running_;
+  SequentialImpulseSolver running_;
   long probe_;
   long solves_ = 0;
 };
@@ -116,8 +130,7 @@ std::vector<double> probeTimes(const Scene& scene) {
 /// nothing, when the reference cannot solve that step.
 void probeScene(const Scene& scene, double time, std::ofstream& data) {
   const long probe = static_cast<long>(time / scene.world.dt + 0.5);
-  auto catcher =
-      std::make_unique<StateCatcher>(makeSolver("sequential", scene.solverSettings), probe);
+  auto catcher = std::make_unique<StateCatcher>(scene.solverSettings.sequential, probe);
   StateCatcher& state = *catcher;
   World world(scene.world, std::move(catcher));
   for (const Body& body : buildBodies(scene)) world.addBody(body);
@@ -132,12 +145,11 @@ void probeScene(const Scene& scene, double time, std::ofstream& data) {
     ReferenceSolver reference(referenceSettingsFor(variant.method, scene.solverSettings));
     const Eigen::VectorXd exact = reference.exactImpulses({bodies, manifolds, state.dt_});
     for (size_t i = 0; i < kIterations.size(); ++i) {
-      std::unique_ptr<ContactSolver> solver =
-          solverAt(variant, kIterations[i], scene.solverSettings);
+      const auto solve = solverAt(variant, kIterations[i], scene.solverSettings);
       const double microseconds = medianSolveTime([&] {
         bodies = state.bodies_;
         manifolds = state.manifolds_;
-        solver->solveVelocities({bodies, manifolds, state.dt_});
+        solve({bodies, manifolds, state.dt_});
       });
       const Eigen::VectorXd impulses = appliedImpulses(manifolds);
       const double error = relativeImpulseError(impulses, exact);

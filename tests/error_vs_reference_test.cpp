@@ -3,6 +3,11 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/solvers/error_vs_reference.h"
@@ -104,4 +109,57 @@ TEST_CASE("a solve without an exact answer is recorded as such and the method's 
   }
   CHECK(unanswered > 0);
   for (const Body& body : world->bodies()) CHECK(body.position.allFinite());
+}
+
+namespace {
+
+/// Every body's pose and velocity after each of `steps` steps, bit for bit, and the error that
+/// stopped the run early, if one did.
+struct Trajectory {
+  std::vector<double> states;
+  std::string stoppedBy;
+};
+
+Trajectory trajectoryOf(World& world, int steps) {
+  Trajectory trajectory;
+  try {
+    for (int step = 0; step < steps; ++step) {
+      world.step();
+      for (const Body& body : world.bodies()) {
+        trajectory.states.insert(trajectory.states.end(),
+                                 {body.position.x(), body.position.y(), body.angle,
+                                  body.velocity.x(), body.velocity.y(), body.angularVelocity});
+      }
+    }
+  } catch (const std::runtime_error& stop) {
+    trajectory.stoppedBy = stop.what();
+  }
+  return trajectory;
+}
+
+}  // namespace
+
+TEST_CASE("the reference watching a method leaves its run bit for bit as it is",
+          "[error_vs_reference]") {
+  // The first steps of every shipped scene: a watcher that changed the run would change them
+  // (one that added gravity twice moves every falling body from the first step on). A large pile
+  // is cut to its first bodies (the ground and the lowest rows) to keep the test cheap.
+  const std::string scenes = IMPULSE2D_SOURCE_DIR "/demos/scenes";
+  for (const auto& entry : std::filesystem::directory_iterator(scenes)) {
+    Scene scene = loadSceneFile(entry.path().string());
+    if (scene.bodies.size() > 20) scene.bodies.resize(20);
+    const int steps = 10;
+    for (const char* method : {"micro", "sequential", "soft_step", "reference"}) {
+      INFO(entry.path().filename().string() << " under " << method);
+      scene.solver = method;
+      auto plain = buildWorld(scene);
+      auto watched = watchedWorld(scene);
+      const Trajectory alone = trajectoryOf(*plain, steps);
+      const Trajectory whileWatched = trajectoryOf(*watched, steps);
+      CHECK(whileWatched.stoppedBy == alone.stoppedBy);
+      REQUIRE(whileWatched.states.size() == alone.states.size());
+      CHECK(std::memcmp(whileWatched.states.data(), alone.states.data(),
+                        alone.states.size() * sizeof(double)) == 0);
+    }
+  }
 }

@@ -1,4 +1,4 @@
-// The solver factory (solver names -> solvers) and the default substep of a contact method.
+// The solver factory: solver names -> solvers.
 #include "impulse2d/solver.h"
 
 #include <stdexcept>
@@ -9,21 +9,6 @@
 #include "impulse2d/solvers/soft_step.h"
 
 namespace impulse2d {
-
-// The forces are integrated into the velocities, which the method's impulses then act on; the
-// positions follow the velocities after impulses, and the method removes what penetration remains.
-void ContactSolver::step(const StepContext& context, StepStages& stages) {
-  stages.integrateVelocities();
-  stages.stopAtNonFiniteBody();
-  solveVelocities(context);
-  stages.integratePositions();
-  solvePositions(context);
-  stages.refreshCaches();
-}
-
-bool ContactSolver::keepManifold(const Manifold&, const std::vector<Body>&, Manifold&) const {
-  return false;
-}
 
 std::vector<std::string> solverNames() {
   return {"micro", "sequential", "reference", "soft_step"};

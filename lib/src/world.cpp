@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 #include "impulse2d/collide.h"
@@ -53,6 +52,12 @@ void fallAsleep(Body& body) {
 class World::WorldStages : public StepStages {
  public:
   WorldStages(World& world, double h) : world_(world), h_(h) {}
+  StepContext findContacts(const ContactFinding& finding) override {
+    world_.findContacts(h_, finding);
+    world_.wakeTouchedIslands();
+    return {world_.bodies_, world_.manifoldsToSolve(), h_, world_.observer_,
+            world_.settings_.gravity};
+  }
   void integrateVelocities() override {
     world_.integrateVelocities(h_);
     if (world_.observer_) world_.observer_->onVelocitiesChanged(world_.bodies_);
@@ -61,6 +66,7 @@ class World::WorldStages : public StepStages {
   void clearForces() override { world_.clearForces(); }
   void refreshCaches() override { world_.refreshCaches(); }
   void stopAtNonFiniteBody() override { world_.stopAtNonFiniteBody(); }
+  void storeImpulses() override { world_.storeSolvedManifolds(); }
 
  private:
   World& world_;
@@ -101,15 +107,12 @@ void World::substep(double h) {
     statistics_.keptManifolds = int(manifolds_.size());
     return;
   }
-  findContacts(h);
-  wakeTouchedIslands();
   rememberStartPoses();
   WorldStages stages(*this, h);
-  solver_->step({bodies_, manifoldsToSolve(), h, observer_, settings_.gravity}, stages);
+  solver_->step(stages);
   if (settings_.continuous) {
     stopAtTimeOfImpact(bodies_, startPoses_, staticBodies_, 0.5 * settings_.contactMargin);
   }
-  storeSolvedManifolds();
   stopAtNonFiniteBody();
   putRestingIslandsToSleep(h);
 }
@@ -126,14 +129,15 @@ void World::wakeDisturbedBodies() {
   }
 }
 
-void World::findContacts() {
+void World::findContacts(const ContactFinding& finding) {
   statistics_ = StepStatistics{};
-  findContacts(settings_.dt / settings_.substeps);
+  findContacts(settings_.dt / settings_.substeps, finding);
 }
 
 // Candidate pairs and the last substep's manifolds are both sorted by (A, B), so one merge walk
 // keeps the manifolds of sleeping pairs and carries impulses over to the recomputed ones.
-void World::findContacts(double h) {
+void World::findContacts(double h, const ContactFinding& finding) {
+  finding_ = finding;
   previousManifolds_.swap(manifolds_);
   manifolds_.clear();
   findCandidatePairs(h);
@@ -143,7 +147,7 @@ void World::findContacts(double h) {
     old = keepSleepingManifolds(old, pair);
     const bool hadManifold = old != previousManifolds_.cend() && keyOf(*old) == pair;
     Manifold manifold;
-    if (hadManifold && solver_->keepManifold(*old, bodies_, manifold)) {
+    if (hadManifold && finding.keeping && finding.keeping->keep(*old, bodies_, manifold)) {
       manifolds_.push_back(manifold);
       ++statistics_.reusedManifolds;
       continue;
@@ -201,9 +205,9 @@ void World::listStaticBodies() {
   }
 }
 
-// Speculative contacts, by the world's setting or because the solver finds its contacts ahead.
+// Speculative contacts, by the world's setting or because the method finds its contacts ahead.
 bool World::speculativeContacts() const {
-  return settings_.speculativeContacts || solver_->findsContactsAhead();
+  return settings_.speculativeContacts || finding_.ahead;
 }
 
 // Speculative contacts: the gap the pair can close within the substep is added to the margin.
@@ -279,21 +283,16 @@ void World::layOutSweep() {
 // Islands by union-find: every contact between two dynamic bodies joins their islands. Static
 // bodies join none, so a floor does not make the whole scene one island.
 void World::buildIslands() {
-  islandParent_.resize(bodies_.size());
-  std::iota(islandParent_.begin(), islandParent_.end(), 0);
+  islands_.reset(static_cast<int>(bodies_.size()));
   for (const Manifold& manifold : manifolds_) {
     if (bodies_[manifold.bodyA].isStatic() || bodies_[manifold.bodyB].isStatic()) continue;
-    islandParent_[islandOf(manifold.bodyA)] = islandOf(manifold.bodyB);
+    islands_.join(manifold.bodyA, manifold.bodyB);
   }
 }
 
-/// The root of the body's island (path halving keeps the trees flat).
+/// The root of the body's island.
 int World::islandOf(int body) {
-  while (islandParent_[body] != body) {
-    islandParent_[body] = islandParent_[islandParent_[body]];
-    body = islandParent_[body];
-  }
-  return body;
+  return islands_.root(body);
 }
 
 // An awake body touching a sleeping one wakes the sleeper's whole island, so the island is
@@ -314,11 +313,7 @@ void World::integrateVelocities(double h) {
   for (Body& body : bodies_) {
     if (!body.isAwake()) continue;
     ++statistics_.awakeBodies;
-    body.lastAcceleration = settings_.gravity + body.inverseMass * body.force;
-    body.velocity += h * body.lastAcceleration;
-    body.angularVelocity += h * body.inverseInertia * body.torque;
-    body.force.setZero();
-    body.torque = 0.0;
+    body.integrateVelocity(settings_.gravity, h);
   }
 }
 

@@ -118,6 +118,16 @@ struct Body {
     torque += load.torque;
   }
 
+  /// The velocity update of a substep h under gravity g: v += (g + F/m)·h, ω += (τ/I)·h, the
+  /// linear acceleration kept in lastAcceleration, the force and torque cleared.
+  void integrateVelocity(const Vec2& gravity, double h) {
+    lastAcceleration = gravity + inverseMass * force;
+    velocity += h * lastAcceleration;
+    angularVelocity += h * inverseInertia * torque;
+    force.setZero();
+    torque = 0.0;
+  }
+
   /// Recomputes the cached rotation and bounds after position or angle changed.
   void updateCache();
   /// Recomputes only the cached rotation (one sine and cosine); the bounds wait for updateCache.

@@ -47,7 +47,7 @@ struct ContactPoint {
   FeatureId id = 0;
   /// m, world frame: the arms from A's and B's centres to `point`, and the penetration, when the
   /// narrow phase found the point. A manifold a method keeps across steps
-  /// (ContactSolver::keepManifold) keeps them as they were and measures its overlap from them.
+  /// (ManifoldKeeping, solver.h) keeps them as they were and measures its overlap from them.
   Vec2 foundArmA = Vec2::Zero();
   /// B's arm, as found
   Vec2 foundArmB = Vec2::Zero();

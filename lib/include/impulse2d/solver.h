@@ -1,6 +1,7 @@
 // The one interface every contact method sits behind, so a scene can run, trace and compare any
-// of them. The world finds the contacts, then calls the method's step, which runs the shared
-// stages and its own passes in its own order (see world.h and docs/architecture.md).
+// of them. The world calls the method's step, which runs the shared stages (find contacts,
+// integrate, store impulses, ...) and its own passes in its own order (see world.h and
+// docs/architecture.md).
 #pragma once
 
 #include <memory>
@@ -79,11 +80,34 @@ struct SolveReport {
   bool converged = true;
 };
 
-/// The shared stages of a substep that a method calls, in its own order, from ContactSolver::step.
-/// The world provides them; each acts on the awake bodies.
+/// A method that may keep last substep's manifold of a pair instead of having it found anew (as
+/// Box2D v3 does while the pair's bodies move little).
+class ManifoldKeeping {
+ public:
+  virtual ~ManifoldKeeping() = default;
+  /// Writes the manifold to keep into `kept` and returns true, or returns false to have the pair
+  /// found anew; `previous` is the pair's manifold of the last substep.
+  virtual bool keep(const Manifold& previous, const std::vector<Body>& bodies,
+                    Manifold& kept) const = 0;
+};
+
+/// How a method wants its contacts found.
+struct ContactFinding {
+  /// Find every contact before the surfaces meet, whatever the world's settings say: the broad
+  /// and narrow phases then reach as far as the pair can close in the substep.
+  bool ahead = false;
+  /// null, or what decides which manifolds the method keeps
+  const ManifoldKeeping* keeping = nullptr;
+};
+
+/// The shared stages of a substep, which a method's step calls in its own order (as Solver2D's
+/// solvers call solve_common's). The world provides them; each acts on the awake bodies.
 class StepStages {
  public:
   virtual ~StepStages() = default;
+  /// Broad and narrow phase, last substep's impulses carried over by feature id, islands touched
+  /// by an awake body woken; returns what the method solves: the manifolds with an awake body.
+  virtual StepContext findContacts(const ContactFinding& finding) = 0;
   /// v += (g + F/m)·h, ω += (τ/I)·h; the forces and torques are cleared.
   virtual void integrateVelocities() = 0;
   /// x += v·h, θ += ω·h; the rotation is updated, the bounds wait for refreshCaches.
@@ -94,6 +118,9 @@ class StepStages {
   virtual void refreshCaches() = 0;
   /// Stops the run (NonFiniteState) at the first body whose state is not finite.
   virtual void stopAtNonFiniteBody() = 0;
+  /// The solved manifolds, with their impulses, back into the world's, which the next substep
+  /// carries over (warm starting).
+  virtual void storeImpulses() = 0;
 };
 
 /// A contact method: one interface, one file per method (docs/architecture.md).
@@ -102,23 +129,11 @@ class ContactSolver {
   virtual ~ContactSolver() = default;
   /// The name scene files use (one of solverNames()).
   virtual std::string name() const = 0;
-  /// Contact impulses: change the velocities so no contact keeps closing.
-  virtual void solveVelocities(const StepContext& context) = 0;
-  /// Remove the penetration that remains after the positions moved, without adding velocity.
-  virtual void solvePositions(const StepContext& context) = 0;
+  /// One substep of contact solving, from finding the contacts to storing their impulses: the
+  /// shared stages and the method's own passes, in the method's order.
+  virtual void step(StepStages& stages) = 0;
   /// How the last solve went.
   virtual SolveReport lastReport() const { return {}; }
-  /// One substep of the method, from the velocities to the bodies' caches, as a sequence of the
-  /// shared stages and the method's own passes. By default: integrate velocities, solve
-  /// velocities, integrate positions, solve positions, refresh the caches.
-  virtual void step(const StepContext& context, StepStages& stages);
-  /// The method may keep last substep's manifold of a pair instead of having it found anew: it
-  /// then writes the manifold to keep into `kept` and returns true. By default it never does.
-  virtual bool keepManifold(const Manifold& previous, const std::vector<Body>& bodies,
-                            Manifold& kept) const;
-  /// True for a method that needs every contact found before the surfaces meet, whatever the
-  /// world's settings say: the broad and narrow phases then reach as far as the pair can close.
-  virtual bool findsContactsAhead() const { return false; }
 };
 
 /// The names of the solvers this library builds, in the order they were written.

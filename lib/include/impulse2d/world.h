@@ -2,36 +2,33 @@
 //
 // ONE STEP runs the substep below `substeps` times with h = dt/substeps (settings.h), each after
 // applyLoads adds every body's AppliedLoad (body.h) at the substep's start time.
-// ONE SUBSTEP, IN ORDER (semi-implicit, "symplectic", Euler). The world does what every method
-// shares (1-3, 5); the method's step (ContactSolver::step, solver.h) runs the shared stages of 4
-// and its own passes, in its own order:
-//   1. wakeDisturbedBodies a sleeping body the user gave a velocity or force wakes.
-//   2. findContacts        broad phase (sort and sweep on bounding boxes, fattened by |v|·h when
-//                          contacts are found ahead), then the narrow phase for each overlapping
-//                          pair with an awake body; a pair of sleeping or static bodies keeps its
-//                          manifold as it was. Impulses of the last step are carried over to
-//                          points with the same feature id (for warm starting). A point on an
-//                          internal edge of flush static pieces is refused (internal_edges.h).
-//                          A pair whose last manifold the solver keeps
-//                          (ContactSolver::keepManifold) is not found anew.
-//   3. wakeTouchedIslands  islands are the dynamic bodies joined by contacts (static bodies join
-//                          none); an island with an awake body wakes whole.
-//   4. the solver's step, given only the manifolds with an awake body. By default:
-//      integrateVelocities awake bodies: v += (g + F/m)·h, ω += (τ/I)·h; the linear acceleration
-//                          is kept in Body::lastAcceleration; forces and torques are cleared.
-//                          A body whose state is then not finite stops the step (NonFiniteState),
-//                          as one left so after the substep does.
-//      solveVelocities     the solver's contact impulses act on the new velocities.
-//      integratePositions  awake bodies: x += v·h, θ += ω·h, with the velocities after impulses;
-//                          the rotation is updated, the bounds wait for refreshCaches.
-//      solvePositions      the solver removes what penetration remains.
-//      refreshCaches       awake bodies: rotation from the angle and bounds, once per substep.
-//      A method that moves the bodies within its own substeps calls clearForces instead.
-//   then stopAtTimeOfImpact (with continuous on): an awake body whose motion in the substep
-//                          would carry its core into a static body is moved back to where it
-//                          reaches it (continuous.h).
-//   5. putRestingIslandsToSleep  an island whose bodies have all been slower than the sleep
-//                          thresholds for timeToSleep sleeps; its velocities become zero.
+// ONE SUBSTEP (semi-implicit, "symplectic", Euler). The world wakes disturbed bodies, calls the
+// method's step (ContactSolver::step, solver.h), then checks the state and puts resting islands
+// to sleep. The method's step calls the shared stages (StepStages) in its own order:
+//   findContacts        broad phase (sort and sweep on bounding boxes, fattened by |v|·h when the
+//                       method finds contacts ahead), then the narrow phase for each overlapping
+//                       pair with an awake body; a pair of sleeping or static bodies keeps its
+//                       manifold as it was. Impulses of the last step are carried over to points
+//                       with the same feature id (warm starting). A point on an internal edge
+//                       of flush static pieces is refused (internal_edges.h). A pair whose last
+//                       manifold the method keeps (ManifoldKeeping) is not found anew. Islands
+//                       (the dynamic bodies joined by contacts) with an awake body wake whole.
+//                       Returns the manifolds with an awake body: what the method solves.
+//   integrateVelocities awake bodies: v += (g + F/m)·h, ω += (τ/I)·h; the linear acceleration is
+//                       kept in Body::lastAcceleration; forces and torques are cleared.
+//   stopAtNonFiniteBody a body whose state is not finite stops the step (NonFiniteState).
+//   integratePositions  awake bodies: x += v·h, θ += ω·h; the rotation is updated, the bounds
+//                       wait for refreshCaches.
+//   refreshCaches       awake bodies: rotation from the angle and bounds, once per substep.
+//   clearForces         for a method that integrated the forces in its own substeps.
+//   storeImpulses       the solved manifolds back into the world's, for the next substep.
+// Micro, sequential and the reference find contacts, integrate velocities, solve velocities,
+// integrate positions, solve positions, refresh caches and store impulses; a method of substeps
+// finds contacts ahead, keeping some, moves the bodies in its own substeps, clears the forces and
+// stores impulses. After the step, stopAtTimeOfImpact (with continuous on): an awake body whose
+// motion in the substep would carry its core into a static body is moved back to where it reaches
+// it (continuous.h). Then putRestingIslandsToSleep: an island whose bodies have all been slower
+// than the sleep thresholds for timeToSleep sleeps; its velocities become zero.
 #pragma once
 
 #include <memory>
@@ -40,6 +37,7 @@
 
 #include "impulse2d/continuous.h"
 #include "impulse2d/simulation.h"
+#include "impulse2d/union_find.h"
 
 namespace impulse2d {
 
@@ -49,7 +47,7 @@ struct StepStatistics {
   int awakeBodies = 0;       ///< dynamic bodies integrated
   int narrowPhasePairs = 0;  ///< pairs given to collide()
   int keptManifolds = 0;     ///< manifolds of sleeping (or sleeping and static) pairs kept as is
-  int reusedManifolds = 0;   ///< manifolds the solver kept from the last substep (keepManifold)
+  int reusedManifolds = 0;   ///< manifolds the method kept from the last substep (ManifoldKeeping)
   int solvedManifolds = 0;   ///< manifolds given to the solver
 };
 
@@ -83,9 +81,9 @@ class World : public Simulation {
   /// what the last step did
   const StepStatistics& lastStepStatistics() const { return statistics_; }
 
-  /// Step 2 alone: rebuilds the manifolds from the current positions (keeping those the solver
-  /// keeps); the statistics then count this step 2 alone.
-  void findContacts();
+  /// Step 2 alone: rebuilds the manifolds from the current positions, found as `finding` asks
+  /// (a method's ManifoldKeeping keeps what it keeps); the statistics then count step 2 alone.
+  void findContacts(const ContactFinding& finding = {});
 
  private:
   using BodyPair = std::pair<int, int>;
@@ -99,7 +97,7 @@ class World : public Simulation {
   /// Throws NonFiniteState (simulation.h) naming the first dynamic body whose state overflowed.
   void stopAtNonFiniteBody() const;
   void wakeDisturbedBodies();
-  void findContacts(double h);
+  void findContacts(double h, const ContactFinding& finding);
   void findCandidatePairs(double h);
   void computeSweepBounds(double h);
   void sortSweepOrder();
@@ -142,10 +140,11 @@ class World : public Simulation {
   std::vector<int> sweepOrder_;       ///< bodies by the left edge of their bounds
   std::vector<Aabb> sweepBounds_;     ///< by body: bounds fattened for speculative contacts
   std::vector<SweepEntry> sweep_;     ///< in sweep order, so the sweep reads memory in order
-  std::vector<int> islandParent_;     ///< union-find forest of the islands, by body
+  UnionFind islands_;                 ///< the islands, by body
   std::vector<char> islandAwake_;     ///< by island root
   std::vector<double> islandRested_;  ///< s, by island root: the shortest sleep time in it
   StepStatistics statistics_;
+  ContactFinding finding_;  ///< how the method asked for this substep's contacts
   SolverObserver* observer_ = nullptr;
   long stepCount_ = 0;
 };

@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "impulse2d/simulation.h"
 
 namespace impulse2d {
 
@@ -53,29 +57,69 @@ std::unique_ptr<ErrorVsReference> makeWatchedSolver(const std::string& method,
                                             referenceSettingsFor(method, settings));
 }
 
-// A solve whose exact answer the reference cannot find is recorded as such, and the method's run
-// goes on: the reference only watches it here.
-void ErrorVsReference::solveVelocities(const StepContext& context) {
+// The world's stages, passed through to the method; finding the contacts and storing the
+// impulses are where the watcher looks.
+class ErrorVsReference::WatchingStages : public StepStages {
+ public:
+  WatchingStages(StepStages& stages, ErrorVsReference& watcher)
+      : stages_(stages), watcher_(watcher) {}
+  StepContext findContacts(const ContactFinding& finding) override {
+    context_.emplace(stages_.findContacts(finding));
+    watcher_.solveExactly(*context_);
+    return *context_;
+  }
+  void integrateVelocities() override { stages_.integrateVelocities(); }
+  void integratePositions() override { stages_.integratePositions(); }
+  void clearForces() override { stages_.clearForces(); }
+  void refreshCaches() override { stages_.refreshCaches(); }
+  void stopAtNonFiniteBody() override { stages_.stopAtNonFiniteBody(); }
+  void storeImpulses() override {
+    if (context_) watcher_.measure(*context_);
+    stages_.storeImpulses();
+  }
+
+ private:
+  StepStages& stages_;
+  ErrorVsReference& watcher_;
+  std::optional<StepContext> context_;
+};
+
+void ErrorVsReference::step(StepStages& stages) {
+  WatchingStages watching(stages, *this);
+  method_->step(watching);
+}
+
+// The copy gets the velocity update every method starts from (the world's, or soft step's spread
+// over its substeps). A solve whose exact answer the reference cannot find is recorded as such,
+// and the method's run goes on: the reference only watches it here.
+void ErrorVsReference::solveExactly(const StepContext& context) {
   std::vector<Body> bodies = context.bodies;
   std::vector<Manifold> manifolds = context.manifolds;
-  ReferenceError error;
-  error.step = static_cast<long>(errors_.size());
-  Eigen::VectorXd exact;
-  try {
-    exact = reference_.exactImpulses({bodies, manifolds, context.dt});
-  } catch (const ReferenceSolveFailure& failure) {
-    error.noExactAnswer = failure.what();
+  for (Body& body : bodies) {
+    if (body.isAwake()) body.integrateVelocity(context.gravity, context.dt);
   }
-  method_->solveVelocities(context);
+  error_ = ReferenceError{};
+  error_.step = static_cast<long>(errors_.size());
+  exact_.resize(0);
+  try {
+    stopAtNonFiniteBody(bodies, context.gravity, error_.step, name());
+    exact_ = reference_.exactImpulses({bodies, manifolds, context.dt});
+  } catch (const std::runtime_error& failure) {  // ReferenceSolveFailure or NonFiniteState
+    error_.noExactAnswer = failure.what();
+  }
+}
+
+void ErrorVsReference::measure(const StepContext& context) {
+  ReferenceError error = error_;
   const Eigen::VectorXd impulses = appliedImpulses(context.manifolds);
   error.points = static_cast<int>(impulses.size() / 2);
-  if (exact.size() == 0) {
+  if (exact_.size() == 0) {
     error.impulseError = std::numeric_limits<double>::quiet_NaN();
     error.velocityError = error.impulseError;
     if (!error.noExactAnswer.empty()) error.violation = error.impulseError;
   } else {
-    error.impulseError = relativeImpulseError(impulses, exact);
-    error.velocityError = energyNormError(impulses, exact, reference_.delassusMatrix());
+    error.impulseError = relativeImpulseError(impulses, exact_);
+    error.velocityError = energyNormError(impulses, exact_, reference_.delassusMatrix());
     error.violation = reference_.residual(impulses);
   }
   errors_.push_back(error);

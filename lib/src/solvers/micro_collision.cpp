@@ -30,6 +30,19 @@ double tangentPart(const Vec2& pair) {
 }  // namespace
 // ---- velocity resolution ----
 
+// The lecture's update: the forces into the velocities, the impulses on the new velocities, the
+// positions moved by them, then what penetration remains resolved.
+void MicroCollisionSolver::step(StepStages& stages) {
+  const StepContext context = stages.findContacts({});
+  stages.integrateVelocities();
+  stages.stopAtNonFiniteBody();
+  solveVelocities(context);
+  stages.integratePositions();
+  solvePositions(context);
+  stages.refreshCaches();
+  stages.storeImpulses();
+}
+
 void MicroCollisionSolver::solveVelocities(const StepContext& context) {
   prepare(context);
   queueKeys_.clear();

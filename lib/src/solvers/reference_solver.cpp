@@ -12,6 +12,7 @@
 
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/position_correction.h"
+#include "impulse2d/union_find.h"
 
 #include "compressed_columns.h"
 
@@ -210,6 +211,18 @@ class ColumnPairBlocks {
 
 }  // namespace
 
+// The step of sequential impulses, with the exact impulses in place of the sweeps.
+void ReferenceSolver::step(StepStages& stages) {
+  const StepContext context = stages.findContacts({});
+  stages.integrateVelocities();
+  stages.stopAtNonFiniteBody();
+  solveVelocities(context);
+  stages.integratePositions();
+  solvePositions(context);
+  stages.refreshCaches();
+  stages.storeImpulses();
+}
+
 void ReferenceSolver::solveVelocities(const StepContext& context) {
   const Eigen::VectorXd impulses = exactImpulses(context);
   if (!rows_.empty()) applyImpulses(context, impulses);  // else nothing touches: nothing to solve
@@ -381,24 +394,16 @@ void ReferenceSolver::buildFreeVelocity(const StepContext& context) {
 // through dynamic bodies joins them. A static body joins nothing (it takes no impulse, so the
 // points on it do not couple), which is what cuts a pile on the ground into islands.
 void ReferenceSolver::groupIslands(const StepContext& context) {
-  std::vector<int> parent(context.bodies.size());
-  for (int b = 0; b < static_cast<int>(parent.size()); ++b) parent[b] = b;
-  const auto root = [&parent](int body) {
-    while (parent[body] != body) {
-      body = parent[body] = parent[parent[body]];
-    }
-    return body;
-  };
+  UnionFind bodies;
+  bodies.reset(static_cast<int>(context.bodies.size()));
   for (const PointRow& row : rows_) {
-    if (row.body[0] >= 0 && row.body[1] >= 0) {
-      parent[root(row.body[0])] = root(row.body[1]);
-    }
+    if (row.body[0] >= 0 && row.body[1] >= 0) bodies.join(row.body[0], row.body[1]);
   }
-  std::vector<int> islandOfRoot(parent.size(), -1);
+  std::vector<int> islandOfRoot(context.bodies.size(), -1);
   islands_.clear();
   for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
     const PointRow& row = rows_[i];
-    const int body = root(row.body[0] >= 0 ? row.body[0] : row.body[1]);
+    const int body = bodies.root(row.body[0] >= 0 ? row.body[0] : row.body[1]);
     int& island = islandOfRoot[body];
     if (island < 0) {
       island = static_cast<int>(islands_.size());

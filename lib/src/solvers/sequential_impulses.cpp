@@ -11,6 +11,19 @@
 
 namespace impulse2d {
 
+// Box2D-Lite's and 2.4's step: the forces into the velocities, the impulses on the new
+// velocities, the positions moved by them, then the position pass.
+void SequentialImpulseSolver::step(StepStages& stages) {
+  const StepContext context = stages.findContacts({});
+  stages.integrateVelocities();
+  stages.stopAtNonFiniteBody();
+  solveVelocities(context);
+  stages.integratePositions();
+  solvePositions(context);
+  stages.refreshCaches();
+  stages.storeImpulses();
+}
+
 void SequentialImpulseSolver::solveVelocities(const StepContext& context) {
   prepare(context);
   warmStart();

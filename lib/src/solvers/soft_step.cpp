@@ -103,12 +103,14 @@ Softness rigidSoftness(double h) {
   return {1.0 / h, 1.0, 0.0};
 }
 
-// The bodies move within solveVelocities' own substeps; the forces it used are cleared after.
-void SoftStepSolver::step(const StepContext& context, StepStages& stages) {
+// Box2D v3's step: the bodies move within the substeps, so the shared stages only find the
+// contacts, check the state, clear the forces the substeps used and store the impulses.
+void SoftStepSolver::step(StepStages& stages) {
+  const StepContext context = stages.findContacts(contactFinding());
   stages.stopAtNonFiniteBody();
-  solveVelocities(context);
-  solvePositions(context);
+  solveSubsteps(context);
   stages.clearForces();
+  stages.storeImpulses();
 }
 
 // Contact recycling (Box2D v3): while neither body has turned more than the largest turn since the
@@ -119,8 +121,8 @@ void SoftStepSolver::step(const StepContext& context, StepStages& stages) {
 // not, with roundSurfaces), as the substeps measure it. A normal that runs to a circle's centre
 // turns as the bodies move past each other, so such manifolds may be found anew every step
 // (renewRoundNormals; v3 keeps them).
-bool SoftStepSolver::keepManifold(const Manifold& old, const std::vector<Body>& bodies,
-                                  Manifold& manifold) const {
+bool SoftStepSolver::keep(const Manifold& old, const std::vector<Body>& bodies,
+                          Manifold& manifold) const {
   if (!settings_.contactRecycling || settings_.recycleDistance <= 0.0 || old.pointCount == 0) {
     return false;
   }
@@ -154,7 +156,7 @@ bool SoftStepSolver::keepManifold(const Manifold& old, const std::vector<Body>& 
   return true;
 }
 
-void SoftStepSolver::solveVelocities(const StepContext& context) {
+void SoftStepSolver::solveSubsteps(const StepContext& context) {
   const double h = context.dt / settings_.substeps;
   inverseSubstep_ = 1.0 / h;
   pushVelocity_ = settings_.maxPushVelocity;

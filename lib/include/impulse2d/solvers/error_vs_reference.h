@@ -1,7 +1,8 @@
 // Each method's error against the exact answer of the same step. A method's solver is wrapped:
-// at every step the global reference (reference_solver.h) first solves a copy of the method's
-// pre-solve state exactly, then the method solves the real one, and the two answers are compared
-// point by point. The method's run is unchanged; the reference only watches.
+// at every step the global reference (reference_solver.h) solves a copy of the state the method
+// starts from, given the step's velocity update, exactly; the method runs its own step, and the
+// two answers are compared point by point. The method's run is unchanged: the reference only
+// ever solves copies.
 #pragma once
 
 #include <memory>
@@ -56,7 +57,7 @@ class ErrorVsReference;
 std::unique_ptr<ErrorVsReference> makeWatchedSolver(const std::string& method,
                                                     const SolverSettings& settings);
 
-/// A method watched by the reference: each velocity solve is compared with the exact one.
+/// A method watched by the reference: each step's impulses are compared with the exact ones.
 class ErrorVsReference : public ContactSolver {
  public:
   /// `method` watched by a reference solver with `reference` settings.
@@ -64,19 +65,28 @@ class ErrorVsReference : public ContactSolver {
       : method_(std::move(method)), reference_(reference) {}
 
   std::string name() const override { return method_->name(); }
-  /// Solves a copy of the pre-solve state exactly, then lets the method solve, then compares.
-  void solveVelocities(const StepContext& context) override;
-  void solvePositions(const StepContext& context) override { method_->solvePositions(context); }
+  /// The method's own step, watched through its stages: once the contacts are found, a copy of
+  /// the bodies is given this substep's velocity update and solved exactly; once the method
+  /// stores its impulses, they are compared with the exact ones. Only copies are solved.
+  void step(StepStages& stages) override;
   SolveReport lastReport() const override { return method_->lastReport(); }
 
-  /// One entry per velocity solve so far.
+  /// One entry per step (or substep) so far.
   const std::vector<ReferenceError>& errors() const { return errors_; }
   /// the watched method
   ContactSolver& method() { return *method_; }
 
  private:
+  class WatchingStages;
+  /// The exact impulses of the state the method starts from, after the velocity update.
+  void solveExactly(const StepContext& context);
+  /// The method's impulses against the exact ones.
+  void measure(const StepContext& context);
+
   std::unique_ptr<ContactSolver> method_;
   ReferenceSolver reference_;
+  ReferenceError error_;   ///< this step's, filled as the step goes
+  Eigen::VectorXd exact_;  ///< this step's exact impulses, empty when there are none
   std::vector<ReferenceError> errors_;
 };
 

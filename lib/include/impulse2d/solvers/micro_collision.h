@@ -26,8 +26,13 @@ class MicroCollisionSolver : public ContactSolver {
   explicit MicroCollisionSolver(const MicroCollisionSettings& settings) : settings_(settings) {}
 
   std::string name() const override { return "micro"; }
-  void solveVelocities(const StepContext& context) override;
-  void solvePositions(const StepContext& context) override;
+  /// Finds the contacts, integrates the velocities, resolves them, moves the bodies, resolves the
+  /// penetration that remains.
+  void step(StepStages& stages) override;
+  /// The velocity phase: impulses worst first.
+  void solveVelocities(const StepContext& context);
+  /// The penetration phase: moves worst first.
+  void solvePositions(const StepContext& context);
   SolveReport lastReport() const override { return report_; }
 
   /// its settings

@@ -58,9 +58,12 @@ class ReferenceSolver : public ContactSolver {
   /// Builds and solves the step's LCP and applies its impulses. Throws ReferenceSolveFailure (after
   /// setting lastReport().converged = false) when Lemke fails or the residual exceeds the
   /// tolerance: never a silent half answer.
-  void solveVelocities(const StepContext& context) override;
+  void solveVelocities(const StepContext& context);
   /// The same position pass as sequential impulses (position_correction.h).
-  void solvePositions(const StepContext& context) override;
+  void solvePositions(const StepContext& context);
+  /// Finds the contacts, integrates the velocities, solves them exactly, moves the bodies, runs
+  /// the position pass.
+  void step(StepStages& stages) override;
   /// iterations: Lemke pivots plus active-set factorizations; residual: the worst violated
   /// condition in N s, relative to the step's impulse scale (the largest of the impulses, each
   /// point's cancelling impulses and the momenta of the bodies in contact).

@@ -28,9 +28,13 @@ class SequentialImpulseSolver : public ContactSolver {
       : settings_(settings) {}
 
   std::string name() const override { return "sequential"; }
-  void solveVelocities(const StepContext& context) override;
+  /// Finds the contacts, integrates the velocities, sweeps them, moves the bodies, runs the
+  /// position pass.
+  void step(StepStages& stages) override;
+  /// The velocity sweeps.
+  void solveVelocities(const StepContext& context);
   /// The shared position pass (position_correction.h): moves positions, never velocities.
-  void solvePositions(const StepContext& context) override;
+  void solvePositions(const StepContext& context);
   /// iterations: sweeps made; residual: the largest impulse change (normal or friction) in the last
   /// sweep (N s).
   SolveReport lastReport() const override { return report_; }

@@ -34,28 +34,20 @@ Softness makeSoftness(double hertz, double dampingRatio, double h);
 Softness rigidSoftness(double h);
 
 /// Box2D v3's soft step: substeps of soft contacts, relax, restitution (docs/soft-step.md).
-class SoftStepSolver : public ContactSolver {
+class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
  public:
   /// A solver with these settings.
   explicit SoftStepSolver(const SoftStepSettings& settings) : settings_(settings) {}
 
   std::string name() const override { return "soft_step"; }
-  /// The whole step: substeps of velocity, warm start, biased solve, positions and relax, then
-  /// restitution; moves the bodies.
-  void solveVelocities(const StepContext& context) override;
-  /// Nothing: the soft constraints already pushed the overlap out within the substeps.
-  void solvePositions(const StepContext&) override {}
+  /// Finds the contacts (ahead, recycling what moved little), then the substeps move the bodies:
+  /// velocity, warm start, biased solve, positions and relax, then restitution.
+  void step(StepStages& stages) override;
   /// iterations: substeps made; residual: the largest normal impulse change in the last relax.
   SolveReport lastReport() const override { return report_; }
-  /// The whole substep is its own: solveVelocities moves the bodies within its substeps, so the
-  /// shared stages only check the state and clear the forces it used.
-  void step(const StepContext& context, StepStages& stages) override;
-  /// Contact recycling (Box2D v3): last substep's manifold of a pair that moved little since it
-  /// was found is kept, its normal and arms as found and only its overlap updated.
-  bool keepManifold(const Manifold& previous, const std::vector<Body>& bodies,
-                    Manifold& kept) const override;
-  /// Every contact is speculative (settings speculativeContacts, as Box2D v3).
-  bool findsContactsAhead() const override { return settings_.speculativeContacts; }
+  /// How soft step finds its contacts: every contact speculative (settings speculativeContacts,
+  /// as Box2D v3), and its contact recycling.
+  ContactFinding contactFinding() const { return {settings_.speculativeContacts, this}; }
 
   /// its settings
   const SoftStepSettings& settings() const { return settings_; }
@@ -118,6 +110,12 @@ class SoftStepSolver : public ContactSolver {
     double impulseScale = 0.0;
   };
 
+  /// Contact recycling (Box2D v3): last substep's manifold of a pair that moved little since it
+  /// was found is kept, its normal and arms as found and only its overlap updated.
+  bool keep(const Manifold& previous, const std::vector<Body>& bodies,
+            Manifold& kept) const override;
+  /// The substeps, restitution and the impulses stored; moves the bodies.
+  void solveSubsteps(const StepContext& context);
   void prepareBodies(const StepContext& context, double h);
   void prepareConstraints(const StepContext& context, double h);
   void placePoint(const Manifold& manifold, const ContactPoint& point, const Body& bodyA,
