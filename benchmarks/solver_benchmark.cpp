@@ -9,7 +9,7 @@
 //   solver_benchmark --speed [SCENE...]  every method at its defaults, sequential impulses also
 //                                at 8+3 and under the box2d_2_4 preset, against Box2D 8+3 on
 //                                pyramid20, pyramid40 and rain: time ratios to b2World::Step alone
-//                                (medians of interleaved steps) against the speed targets
+//                                (medians over rounds of whole runs in turn) against the targets
 //   solver_benchmark --callgrind [--quick]  instructions per step of every method and of Box2D
 //                                (b2World::Step alone, and through the adapter) on stack10,
 //                                pyramid20, pyramid40 and rain, each run under valgrind in turn
@@ -252,38 +252,79 @@ const std::vector<MethodRun> kSpeedMethods = {
     kBox2d24Preset,   kStackMethods[3], kStackMethods[4],
 };
 
-/// One scene's row of the speed table.
-void printSpeedRow(const std::string& sceneName, const std::vector<RunFigures>& f) {
+/// Whole runs of every method, repeated in turn (A B C … A B C …) so that a change in the
+/// machine's load falls on all of them alike, while each run keeps its own data in the caches
+/// as a program of its own would: stepping the methods one step each instead leaves every
+/// step to start from caches the others have filled. The ratio to Box2D is the median over the
+/// rounds of the ratio within a round.
+constexpr int kSpeedRounds = 3;
+/// s of stepping a speed run may take (micro takes a tenth of a second a step on rain); the
+/// median then covers the steps taken.
+constexpr double kSpeedRunBudget = 10.0;
+
+double medianOf(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+/// The rounds' figures of one scene: figures[round][method].
+std::vector<std::vector<RunFigures>> measureRounds(const Scene& scene) {
+  std::vector<std::vector<RunFigures>> rounds(kSpeedRounds);
+  for (std::vector<RunFigures>& round : rounds) {
+    for (const MethodRun& method : kSpeedMethods) {
+      RunPlan plan = planFor(scene, method, Length{});
+      plan.timeBudget = kSpeedRunBudget;
+      MeasuredRun run(
+          withPreset(withMethod(scene, method.solver, method.iterations), method.preset), plan);
+      runToEnd(run);
+      round.push_back(run.figures());
+    }
+  }
+  return rounds;
+}
+
+/// One scene's row of the speed table: medians over the rounds.
+void printSpeedRow(const std::string& sceneName,
+                   const std::vector<std::vector<RunFigures>>& rounds) {
   const SpeedTarget target = speedTargetOf(sceneName);
-  const double box2d = f[0].medianMicroseconds;
-  const double wrapper = f[0].medianWholeStepMicroseconds;
+  const auto medianOver = [&rounds](auto figureOfRound) {
+    std::vector<double> values;
+    for (const std::vector<RunFigures>& round : rounds) values.push_back(figureOfRound(round));
+    return medianOf(values);
+  };
+  const double box2d = medianOver([](const auto& f) { return f[0].medianMicroseconds; });
+  const double wrapper = medianOver([](const auto& f) { return f[0].medianWholeStepMicroseconds; });
   std::printf("| %s | %.0f | %.0f (+%.0f%%) |", sceneName.c_str(), box2d, wrapper,
               100.0 * (wrapper / box2d - 1.0));
   const double targets[] = {kSpeedTargetAtBox2dIterations, target.sequentialAtDefaults,
                             std::nan(""), target.softStep, std::nan("")};
-  for (size_t i = 1; i < f.size(); ++i) {
-    std::printf(" %s |", ratioCell(f[i].medianMicroseconds / box2d, targets[i - 1]).c_str());
+  for (size_t i = 1; i < kSpeedMethods.size(); ++i) {
+    const double ratio = medianOver(
+        [i](const auto& f) { return f[i].medianMicroseconds / f[0].medianMicroseconds; });
+    std::printf(" %s |", ratioCell(ratio, targets[i - 1]).c_str());
   }
-  std::printf(" %s |", cell(f[0].drift, "%.2e").c_str());
-  for (size_t i = 1; i < f.size(); ++i) std::printf(" %s", cell(f[i].drift, "%.2e").c_str());
+  const std::vector<RunFigures>& first = rounds[0];
+  std::printf(" %s |", cell(first[0].drift, "%.2e").c_str());
+  for (size_t i = 1; i < first.size(); ++i)
+    std::printf(" %s", cell(first[i].drift, "%.2e").c_str());
   std::printf(" |\n");
+  std::fflush(stdout);
 }
 
-/// Every method at its defaults (and sequential impulses at Box2D's 8+3) against Box2D 2.4.1,
-/// one run per scene with the methods stepping in turn. Box2D's time is b2World::Step alone.
-/// Instructions per step come from the --callgrind mode.
+/// Every method at its defaults (and sequential impulses at Box2D's 8+3) against Box2D 2.4.1.
+/// Box2D's time is b2World::Step alone. Instructions per step come from the --callgrind mode.
 void printSpeedTable(const std::vector<std::string>& sceneNames) {
   std::printf(
-      "\n### Against Box2D 2.4.1: time per step / Box2D's b2World::Step (medians of interleaved "
-      "steps, same run)\n\n");
+      "\n### Against Box2D 2.4.1: time per step / Box2D's b2World::Step (median over %d rounds "
+      "of whole runs in turn)\n\n",
+      kSpeedRounds);
   std::printf(
       "| scene | Box2D Step µs | Box2D through the adapter µs | sequential 8+3 | sequential "
       "defaults | sequential preset box2d_2_4 | soft step | micro | settled drift m, Box2D | "
       "settled drift m, same order |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- | "
       "--- |\n");
   for (const std::string& sceneName : sceneNames) {
-    const Scene scene = shippedScene(sceneName);
-    printSpeedRow(sceneName, measure(scene, kSpeedMethods, Length{}));
+    printSpeedRow(sceneName, measureRounds(shippedScene(sceneName)));
   }
 }
 
