@@ -74,7 +74,10 @@ void MeasuredRun::step() {
   spent_ += elapsed;
   const long step = simulation_->stepCount();
   if (step > plan_.warmupSteps) {
-    stepMicroseconds_.push_back(std::chrono::duration<double, std::micro>(elapsed).count());
+    const double whole = std::chrono::duration<double, std::micro>(elapsed).count();
+    const auto* box2d = dynamic_cast<const Box2dSimulation*>(simulation_.get());
+    stepMicroseconds_.push_back(box2d ? box2d->engineStepMicroseconds() : whole);
+    wholeStepMicroseconds_.push_back(whole);
   }
   if (step == settledStep_) recordSettledState();
   if (step > settledStep_) measureSettledStep();
@@ -118,6 +121,8 @@ RunFigures MeasuredRun::figures() const {
   figures.stepsRun = simulation_->stepCount();
   figures.completed = figures.stepsRun >= plan_.steps;
   figures.medianMicroseconds = stepMicroseconds_.empty() ? notMeasured : median(stepMicroseconds_);
+  figures.medianWholeStepMicroseconds =
+      wholeStepMicroseconds_.empty() ? notMeasured : median(wholeStepMicroseconds_);
   figures.drift = settled ? drift_ : notMeasured;
   figures.largestPenetration = settled ? largestPenetration_ : notMeasured;
   figures.energyGain = settled ? energyGain_ : notMeasured;

@@ -2,6 +2,7 @@
 #include "impulse2d/box2d/box2d_simulation.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -191,8 +192,11 @@ void Box2dSimulation::applyLoads() {
 
 void Box2dSimulation::step() {
   applyLoads();
+  const auto start = std::chrono::steady_clock::now();
   world_->world.Step(float(settings_.dt), iterations_.velocityIterations,
                      iterations_.positionIterations);
+  engineStepMicroseconds_ =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
   readBodies();
   stopAtNonFiniteBody(bodies_, settings_.gravity, stepCount_ + 1, kBox2dName);
   readContacts();
