@@ -552,9 +552,9 @@ Guess firstGuess(const IslandProblem& problem, const Eigen::VectorXd& free,
 /// LU factors of P A Pᵀ, P a symmetric fill-reducing order (AMD on A's pattern, which is
 /// symmetric: two points couple when they share a body) and the pivots A's own diagonal wherever
 /// it is at least diagonalPivotThreshold of its column. A column order alone (COLAMD) with
-/// partial pivoting, as for an unsymmetric matrix, fills 2.2 times as many entries on a 40-row
-/// pyramid's system, and the regularized pivots of a redundant pile (about r) would be passed
-/// over for off-diagonal ones, breaking the symmetric order's fill.
+/// partial pivoting, as for an unsymmetric matrix, fills twice as many entries on a large pile's
+/// system (docs/design/reference-active-set.md), and the regularized pivots of a redundant pile
+/// (about r) would be passed over for off-diagonal ones, breaking the symmetric order's fill.
 struct KeptFactorization::Factors {
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;  ///< P⁻¹
   Eigen::SparseLU<Sparse, Eigen::NaturalOrdering<int>> lu;

@@ -408,7 +408,7 @@ Vec2 MicroCollisionSolver::newTotalImpulse(const PointState& state, const Vec2& 
 // and its bounce is never taken back: friction acts there alone, its normal total left as it is.
 // Holding its normal velocity instead (a normal change of 0) pushes it with whatever normal
 // impulse stopping the slip takes, and two such points of one face, each stopping the slip the
-// other's impulse left, pushed each other apart without end (+67 % energy in an impact).
+// other's impulse left, pushed each other apart without end, gaining energy in an impact.
 bool MicroCollisionSolver::separatesPastItsBounce(const PointState& state) const {
   return state.bounced && normalPart(state.contactVelocity) >
                               targetNormalVelocity(state) + settings_.velocityEpsilon;
@@ -492,7 +492,7 @@ bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen:
 // matrix. The friction total is shared between the points in proportion to their normal totals,
 // so each stays in its cone when the total does. Taken only when both points are engaged and
 // need resolving (a pair impulse where one corner is already resolved costs a settling pile more
-// than it saves: on a 40-row pyramid, 1.3 times the time over 300 steps), both are to bounce or
+// than it saves, docs/design/micro-collision-cost.md), both are to bounce or
 // neither (with pairBounces; without it a bounce passes point by point, as in the cradle), and
 // the new totals push at both points, with static friction or, where static friction cannot hold
 // the pair, dynamic friction (slidingPairTotals); otherwise false, and the worst point is

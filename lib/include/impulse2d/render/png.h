@@ -20,9 +20,8 @@ class RenderError : public std::runtime_error {
 };
 
 /// The image as PNG bytes (RGB when fully opaque, else RGBA), deflated by libdeflate with no
-/// row filter at compression level 1. On a 960 × 540 frame this takes 3 ms where
-/// stb_image_write took 20 to 60 ms, for a smaller file (benchmarks/render_benchmark prints the
-/// time).
+/// row filter at compression level 1: a fraction of stb_image_write's time, for a smaller file
+/// (benchmarks/render_benchmark prints the time).
 std::vector<std::uint8_t> encodePng(const Image& image);
 /// Encodes PNGs, keeping its compressor and output buffer from one image to the next: a run's
 /// frames then reuse memory instead of faulting in fresh pages for every frame.

@@ -104,9 +104,9 @@ double inverseEffectiveMass(const Point& point, int axis, const Eigen::VectorXd&
 /// boxes); W's rows of the touching points are assembled only to be factorized. W itself is
 /// needed only by the projected Gauss–Seidel sweeps that guess the states of
 /// new points (needsGuessSweeps): on a degenerate pile their rounding decides the path of the
-/// first step's flips, and the same sweeps done through the bodies sent 4 of 5 time steps of
-/// pyramid40's first step on a path of 59-64 factorizations instead of 9
-/// (docs/global-reference.md).
+/// first step's flips, and the same sweeps done through the bodies round differently and can
+/// send a large pile's first step on a far longer path of factorizations
+/// (docs/design/reference-active-set.md).
 struct IslandProblem {
   /// the island's contact points
   std::vector<IslandPoint> points;

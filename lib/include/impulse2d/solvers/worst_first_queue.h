@@ -2,8 +2,8 @@
 // every contact at every iteration. Only the items that may still need resolving wait in the
 // heap. A key that rises moves its item up at once, O(log waiting); a key that falls costs O(1):
 // the heap keeps the old key as a bound above the new one, and the item is moved down (or out)
-// only if it reaches the top. An impulse changes the keys of the 10 to 20 points around it; that
-// a fall moves no entry made micro 11-13 % faster on pyramid40 and rain (docs/micro-collisions.md).
+// only if it reaches the top. An impulse changes the keys of the points around it, most of them
+// falling, so most changes cost nothing (docs/design/micro-collision-cost.md).
 #pragma once
 
 #include <vector>
