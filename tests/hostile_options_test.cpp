@@ -112,13 +112,13 @@ TEST_CASE("a --panel missing its colon or an assignment's '=' is refused, exit 2
                               scratch);
   CHECK(noColon.exitCode == 2);
   CHECK(noColon.err ==
-        "error: option --panel needs a colon after its label, 'LABEL: section.key=value; ...', "
-        "not 'off solver.warm_starting=false'\n");
+        "error: --panel: needs a colon after its label, 'LABEL: section.key=value; ...', not "
+        "'off solver.warm_starting=false'\n");
   const Outcome noEquals = i2d(compare + " --panel 'off: solver.warm_starting'", scratch);
   CHECK(noEquals.exitCode == 2);
   CHECK(noEquals.err ==
-        "error: option --panel needs section.key=value, such as solver.velocity_iterations=12, "
-        "not 'solver.warm_starting'\n");
+        "error: --panel: needs section.key=value, such as solver.velocity_iterations=12, not "
+        "'solver.warm_starting'\n");
   CHECK_FALSE(fs::exists(scratch / "frames"));
   const Outcome labelOnly = i2d(compare +
                                     " --panel 'defaults' --panel 'cold: "

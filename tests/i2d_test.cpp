@@ -223,20 +223,33 @@ TEST_CASE("a bad command line is one error line and exit code 2", "[i2d][errors]
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"", "error: no command given (see i2d --help)\n"},
       {"fly", "error: unknown command 'fly' (see i2d --help)\n"},
-      {"run", "error: i2d run needs a SCENE file\n"},
+      {"--steps 3", "error: no command given before '--steps' (see i2d --help)\n"},
+      {"run", "error: SCENE is required\n"},
       {"run " + scene + " --fast",
-       "error: unknown option '--fast' for i2d run (see i2d run --help)\n"},
-      {"run " + scene + " --csv", "error: option --csv needs a value\n"},
-      {"run " + scene + " --steps -3", "error: option --steps needs an integer >= 0, not '-3'\n"},
-      {"run " + scene + " --dt 0", "error: option --dt needs a finite number > 0, not '0'\n"},
-      {"run " + scene + " --every 0", "error: option --every needs an integer >= 1, not '0'\n"},
+       "error: The following argument was not expected: --fast (see i2d run --help)\n"},
+      {"presets " + scene,
+       "error: The following argument was not expected: " + scene + " (see i2d presets --help)\n"},
+      {"run " + scene + " --csv", "error: --csv: 1 required FILE missing\n"},
+      {"run " + scene + " --steps -3",
+       "error: --steps: must be an integer in [0, 10000000], not '-3'\n"},
+      {"run " + scene + " --steps 2.5",
+       "error: --steps: must be an integer in [0, 10000000], not '2.5'\n"},
+      {"run " + scene + " --steps=ten",
+       "error: --steps: must be an integer in [0, 10000000], not 'ten'\n"},
+      {"run " + scene + " --dt 0", "error: --dt: must be in [1e-06, 1], not '0'\n"},
+      {"run " + scene + " --dt nan", "error: --dt: must be in [1e-06, 1], not 'nan'\n"},
+      {"run " + scene + " --every 0", "error: --every: Value 0 not in range 1 to 10000000\n"},
       {"run " + scene + " --solver fast",
-       "error: unknown solver 'fast' (known: micro, sequential, reference, soft_step, box2d)\n"},
-      {"run " + scene + " --set dt=-1",
-       "error: option --set needs section.key=value, such as solver.velocity_iterations=12, not "
+       "error: --solver: fast not in {micro,sequential,reference,soft_step,box2d}\n"},
+      {"run " + scene + " --set solver.velocity_iterations=2 --set dt=-1",
+       "error: --set: needs section.key=value, such as solver.velocity_iterations=12, not "
        "'dt=-1'\n"},
       {"check " + scene + " " + scene,
-       "error: unexpected argument '" + scene + "': i2d check takes one SCENE\n"},
+       "error: The following argument was not expected: " + scene + " (see i2d check --help)\n"},
+      {"run " + scene + " --csv a.csv --error-vs-reference b.csv",
+       "error: --csv excludes --error-vs-reference\n"},
+      {"run " + scene + " --frames f --trace-step 3 --contacts c.csv",
+       "error: --contacts excludes --trace-step\n"},
   };
   for (const auto& [arguments, message] : cases) {
     INFO("i2d " << arguments);
@@ -244,6 +257,33 @@ TEST_CASE("a bad command line is one error line and exit code 2", "[i2d][errors]
     CHECK(outcome.exitCode == 2);
     CHECK(outcome.err == message);
   }
+}
+
+TEST_CASE("an option given twice keeps its last value; each --set applies in order",
+          "[i2d][options]") {
+  const TemporaryDirectory directory;
+  const std::string csv = directory / "ball.csv";
+  const Outcome outcome = i2d("run " + kScenes + "bouncing_ball.toml --steps 5 --steps=1 " +
+                              "--set world.dt=0.5 --set world.dt=0.125 --csv " + csv);
+  CHECK(outcome.exitCode == 0);
+  const std::vector<std::string> lines = readLines(csv);
+  REQUIRE(lines.size() == 1 + 2);  // the header, steps 0 and 1
+  CHECK(lines[2].rfind("1,0.125,ball,", 0) == 0);
+}
+
+TEST_CASE("the overlay switches apply in the order given", "[i2d][frames][options]") {
+  const TemporaryDirectory directory;
+  const auto frame = [&](const std::string& name, const std::string& switches) {
+    REQUIRE(i2d("run " + kScenes + "resting_box.toml --steps 0 --frames " + (directory / name) +
+                " " + switches)
+                .exitCode == 0);
+    return readFile(directory / (name + "/resting_box/resting_box_00000.png"));
+  };
+  const std::string bare = frame("bare", "--no-overlays");
+  const std::string legendLast = frame("legend_last", "--no-overlays --show legend");
+  const std::string legendFirst = frame("legend_first", "--show legend --no-overlays");
+  CHECK(legendLast != bare);
+  CHECK(legendFirst == bare);
 }
 
 TEST_CASE("an invalid scene is one located error, exit code 3, and no CSV", "[i2d][errors]") {
@@ -587,25 +627,26 @@ TEST_CASE("frame options without --frames, and bad overlays, are usage errors",
           "[i2d][frames][errors]") {
   const std::string scene = kScenes + "bouncing_ball.toml";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"run " + scene + " --video", "error: --video needs --frames DIR\n"},
-      {"run " + scene + " --trace-step 3", "error: --trace-step needs --frames DIR\n"},
-      {"run " + scene + " --video=yes", "error: option --video takes no value\n"},
+      {"run " + scene + " --video", "error: --video requires --frames\n"},
+      {"run " + scene + " --trace-step 3", "error: --trace-step requires --frames\n"},
+      {"run " + scene + " --video=yes", "error: video was given a disallowed flag override\n"},
       {"compare " + scene + " --frames f", "error: i2d compare needs --solvers or --panel\n"},
-      {"compare " + scene + " --solvers micro", "error: i2d compare needs --frames DIR\n"},
-      {"run " + scene + " --hide arrows",
-       "error: unknown overlay 'arrows' for --hide (known: all, contact_normals, contact_points, "
-       "friction_gauges, friction_impulses, heads_up, legend, loads, normal_impulses, "
-       "rotation_marks, sliding_velocities, velocities, weights)\n"},
+      {"compare " + scene + " --solvers micro", "error: --frames is required\n"},
+      {"compare " + scene + " --frames f --solvers micro --panel 'a: world.dt=0.01'",
+       "error: --solvers excludes --panel\n"},
+      {"run " + scene + " --hide legend,arrows",
+       "error: --hide: arrows not in {all,contact_normals,contact_points,friction_gauges,"
+       "friction_impulses,heads_up,legend,loads,normal_impulses,rotation_marks,"
+       "sliding_velocities,velocities,weights}\n"},
       {"run " + scene + " --frames x --size 100x100",
-       "error: option --size: each side at least 160 pixels and at most 67108864 pixels in all, "
-       "not '100x100'\n"},
+       "error: --size: each side at least 160 pixels and at most 67108864 pixels in all, not "
+       "'100x100'\n"},
       {"run " + scene + " --frames x --size 1280",
-       "error: option --size needs WIDTHxHEIGHT in "
-       "pixels (e.g. 1280x720), not '1280'\n"},
-      {"run " + scene + " --frames x --format gif",
-       "error: unknown format 'gif' for --format (known: png, svg, pdf)\n"},
-      {"run " + scene + " --frames x --theme dark",
-       "error: unknown theme 'dark' for --theme (known: screen, print)\n"},
+       "error: --size: needs WIDTHxHEIGHT in pixels (e.g. 1280x720), not '1280'\n"},
+      {"run " + scene + " --frames x --size 1280x720x2",
+       "error: --size: needs WIDTHxHEIGHT in pixels (e.g. 1280x720), not '1280x720x2'\n"},
+      {"run " + scene + " --frames x --format gif", "error: --format: gif not in {pdf,png,svg}\n"},
+      {"run " + scene + " --frames x --theme dark", "error: --theme: dark not in {screen,print}\n"},
   };
   for (const auto& [arguments, message] : cases) {
     INFO("i2d " << arguments);

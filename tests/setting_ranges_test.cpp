@@ -163,7 +163,7 @@ TEST_CASE("i2d refuses an out-of-range setting with exit 3, and an out-of-range 
   const Outcome wide = i2d("run " + kScenes + "resting_box.toml --steps 100000000", scratch);
   CHECK(wide.exitCode == 2);
   CHECK(wide.err ==
-        "error: option --steps must be an integer in [0, 10000000] (more would let one run "
+        "error: --steps: must be an integer in [0, 10000000] (more would let one run "
         "take hours), not '100000000'\n");
   const Outcome panels = i2d("compare " + kScenes + "resting_box.toml --steps 2 --frames " +
                                  (scratch / "frames") + " --solvers micro,sequential",

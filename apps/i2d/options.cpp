@@ -1,14 +1,13 @@
-// Parsing the options of the i2d commands.
+// The i2d command line on CLI11: each option is declared once, with what its value must be,
+// what it needs or excludes, and its help line, from which `i2d COMMAND --help` is made.
 #include "options.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
-#include <charconv>
-#include <cmath>
-#include <functional>
 #include <map>
-#include <utility>
 
 #include "failures.h"
+#include "help.h"
 #include "impulse2d/box2d/box2d_simulation.h"
 #include "impulse2d/presets.h"
 #include "impulse2d/scene/scene_file.h"
@@ -19,132 +18,84 @@
 namespace i2d {
 namespace {
 
+using impulse2d::render::ImageFormat;
 using impulse2d::render::Overlays;
 
-/// An argument list read front to back; options find their value in "--name=value" or next.
-class Arguments {
- public:
-  explicit Arguments(const std::vector<std::string>& arguments) : arguments_(arguments) {}
+const std::string kOptionsGroup =
+    "options (a value follows the option or '=': --steps 100, --steps=100)";
 
-  bool done() const { return next_ == arguments_.size(); }
-  /// The next argument; for "--name=value" just "--name", keeping the value for value().
-  std::string take() {
-    const std::string& argument = arguments_[next_++];
-    const size_t equals = argument.find('=');
-    if (argument.rfind("--", 0) != 0 || equals == std::string::npos) return argument;
-    inlineValue_ = argument.substr(equals + 1);
-    return argument.substr(0, equals);
-  }
-  /// The value of the option just taken.
-  std::string value(const std::string& option) {
-    std::string value;
-    if (inlineValue_) {
-      value = std::exchange(inlineValue_, std::nullopt).value();
-    } else if (!done()) {
-      value = arguments_[next_++];
-    }
-    if (value.empty()) throw UsageError("option " + option + " needs a value");
-    return value;
-  }
-  /// Checks that the switch just taken was not given "=value".
-  void noValue(const std::string& option) {
-    if (std::exchange(inlineValue_, std::nullopt)) {
-      throw UsageError("option " + option + " takes no value");
-    }
-  }
-
- private:
-  const std::vector<std::string>& arguments_;
-  size_t next_ = 0;
-  std::optional<std::string> inlineValue_;
-};
-
-int parseInteger(const std::string& text, const std::string& option, int minimum) {
-  int value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || value < minimum) {
-    throw UsageError("option " + option + " needs an integer >= " + std::to_string(minimum) +
-                     ", not '" + text + "'");
-  }
-  return value;
+/// The range of a [world] setting (steps, dt) from the table a scene file is checked against,
+/// so an option refuses what the scene key would: "must be an integer in [0, 10000000]".
+CLI::Validator worldRange(const std::string& key) {
+  const impulse2d::SettingRange range = impulse2d::findSettingRange("world", key).value();
+  const bool integer = key == "steps";
+  CLI::Validator validator(
+      [range, integer](std::string& text) -> std::string {
+        double value = 0.0;
+        if (CLI::detail::lexical_cast(text, value) && impulse2d::inSettingRange(value, range) &&
+            (!integer || value == double(long(value)))) {
+          return "";
+        }
+        return impulse2d::describeSettingRange(range, integer, value) + ", not '" + text + "'";
+      },
+      "");
+  const std::string mustBe = "must be ";
+  return validator.description(
+      impulse2d::describeSettingRange(range, integer, range.lowest).substr(mustBe.size()));
 }
 
-double parsePositive(const std::string& text, const std::string& option) {
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
-      value <= 0.0) {
-    throw UsageError("option " + option + " needs a finite number > 0, not '" + text + "'");
-  }
-  return value;
-}
-
-/// An option that stands for a [world] setting (--steps, --dt, --trace-step's steps) takes
-/// the setting's range from the same table as the scene file.
-void checkWorldRange(double value, const std::string& option, const std::string& key,
-                     const std::string& text) {
-  const std::optional<impulse2d::SettingRange> range = impulse2d::findSettingRange("world", key);
-  if (range && !impulse2d::inSettingRange(value, *range)) {
-    throw UsageError("option " + option + " " +
-                     impulse2d::describeSettingRange(*range, key == "steps", value) + ", not '" +
-                     text + "'");
-  }
-}
-
-std::string trim(const std::string& text) {
-  const size_t first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
-/// "a,b,c" -> {"a", "b", "c"}, each trimmed; empty items are an error.
-std::vector<std::string> splitList(const std::string& text, char separator,
-                                   const std::string& option) {
-  std::vector<std::string> items;
-  size_t begin = 0;
-  while (begin <= text.size()) {
-    const size_t end = std::min(text.find(separator, begin), text.size());
-    items.push_back(trim(text.substr(begin, end - begin)));
-    if (items.back().empty()) throw UsageError("option " + option + " has an empty item");
-    begin = end + 1;
-  }
-  return items;
+/// The most steps a run may take: the top of [world] steps' range.
+int mostSteps() {
+  return int(impulse2d::findSettingRange("world", "steps")->highest);
 }
 
 /// A --set or --panel assignment has the shape section.key=value; what the key and value mean is
 /// the scene reader's to judge (a refused value is an invalid scene, exit 3).
-void checkAssignment(const std::string& assignment, const std::string& option) {
-  if (!impulse2d::isSettingAssignment(assignment)) {
-    throw UsageError("option " + option +
-                     " needs section.key=value, such as solver.velocity_iterations=12, not '" +
-                     assignment + "'");
-  }
+std::string assignmentProblem(const std::string& assignment) {
+  if (impulse2d::isSettingAssignment(assignment)) return "";
+  return "needs section.key=value, such as solver.velocity_iterations=12, not '" + assignment + "'";
 }
 
-/// Every name makeSimulation accepts, as "a, b, c".
-std::string knownSolvers() {
-  std::string names;
-  for (const std::string& name : impulse2d::simulationNames()) {
-    names += (names.empty() ? "" : ", ") + name;
-  }
-  return names;
-}
+const CLI::Validator kAssignment([](std::string& text) { return assignmentProblem(text); }, "");
 
-/// A solver name makeSimulation accepts; a usage error naming them all otherwise.
-std::string checkSolver(const std::string& name) {
-  const std::vector<std::string> known = impulse2d::simulationNames();
-  if (std::find(known.begin(), known.end(), name) == known.end()) {
-    throw UsageError("unknown solver '" + name + "' (known: " + knownSolvers() + ")");
-  }
-  return name;
-}
+/// --solvers SOLVER or SOLVER:PRESET, a preset of that solver (presets.h).
+const CLI::Validator kSolverAndPreset(
+    [](std::string& entry) -> std::string {
+      const size_t colon = entry.find(':');
+      const std::string solver = entry.substr(0, colon);
+      const std::vector<std::string> known = impulse2d::simulationNames();
+      if (std::find(known.begin(), known.end(), solver) == known.end()) {
+        return "unknown solver '" + solver + "' (known: " + CLI::detail::join(known, ", ") + ")";
+      }
+      if (colon != std::string::npos && !impulse2d::findPreset(solver, entry.substr(colon + 1))) {
+        return "unknown preset '" + entry.substr(colon + 1) + "' for solver '" + solver +
+               "' (known: " + impulse2d::presetNames(solver) + "; see i2d presets)";
+      }
+      return "";
+    },
+    "");
 
-/// A preset of that solver (presets.h); a usage error naming the solver's presets otherwise.
-void checkPreset(const std::string& solver, const std::string& name) {
-  if (!impulse2d::findPreset(solver, name)) {
-    throw UsageError("unknown preset '" + name + "' for solver '" + solver +
-                     "' (known: " + impulse2d::presetNames(solver) + "; see i2d presets)");
+/// The panel of `--panel 'LABEL: section.key=value; section.key=value'` (assignments optional).
+PanelOption parsePanel(const std::string& text) {
+  const auto refuse = [](const std::string& problem) {
+    throw CLI::ValidationError("--panel", problem);
+  };
+  const size_t colon = text.find(':');
+  PanelOption panel;
+  panel.label = CLI::detail::trim_copy(text.substr(0, colon));
+  if (panel.label.empty()) refuse("needs 'LABEL: section.key=value; ...', not '" + text + "'");
+  if (colon == std::string::npos && text.find('=') != std::string::npos) {
+    refuse("needs a colon after its label, 'LABEL: section.key=value; ...', not '" + text + "'");
   }
+  const std::string assignments =
+      colon == std::string::npos ? "" : CLI::detail::trim_copy(text.substr(colon + 1));
+  if (assignments.empty()) return panel;
+  for (const std::string& assignment : CLI::detail::split(assignments, ';')) {
+    panel.settings.push_back(CLI::detail::trim_copy(assignment));
+    const std::string problem = assignmentProblem(panel.settings.back());
+    if (!problem.empty()) refuse(problem);
+  }
+  return panel;
 }
 
 /// The overlay switches by name: the snake_case names of RenderSettings::overlays.
@@ -166,80 +117,20 @@ const std::map<std::string, bool Overlays::*>& overlayFields() {
   return fields;
 }
 
-/// --show or --hide LIST: turns the named overlays (or "all") on or off.
-void switchOverlays(Overlays& overlays, const std::string& list, bool on,
-                    const std::string& option) {
-  for (const std::string& name : splitList(list, ',', option)) {
-    if (name == "all") {
-      for (const auto& [field, member] : overlayFields()) overlays.*member = on;
-      continue;
-    }
-    const auto field = overlayFields().find(name);
-    if (field == overlayFields().end()) {
-      std::string known = "all";
-      for (const auto& [knownName, member] : overlayFields()) known += ", " + knownName;
-      throw UsageError("unknown overlay '" + name + "' for " + option + " (known: " + known + ")");
-    }
-    overlays.*(field->second) = on;
-  }
+/// The names --hide and --show take: each overlay, and all.
+std::vector<std::string> overlayNames() {
+  std::vector<std::string> names = {"all"};
+  for (const auto& [name, field] : overlayFields()) names.push_back(name);
+  return names;
 }
 
-using OptionHandler = std::function<void(const std::string& value)>;
-using SwitchHandler = std::function<void()>;
-
-/// The options of a command: those that take a value and the switches that take none.
-struct Handlers {
-  std::map<std::string, OptionHandler> options;
-  std::map<std::string, SwitchHandler> switches;
-};
-
-/// Reads options by their handlers and the one positional argument, the scene.
-void parse(const std::vector<std::string>& arguments, const std::string& command,
-           const Handlers& handlers, std::string& scenePath) {
-  Arguments reader(arguments);
-  while (!reader.done()) {
-    const std::string argument = reader.take();
-    if (argument.size() > 1 && argument[0] == '-') {
-      if (const auto handler = handlers.options.find(argument); handler != handlers.options.end()) {
-        handler->second(reader.value(argument));
-      } else if (const auto flag = handlers.switches.find(argument);
-                 flag != handlers.switches.end()) {
-        reader.noValue(argument);
-        flag->second();
-      } else {
-        throw UsageError("unknown option '" + argument + "' for i2d " + command + " (see i2d " +
-                         command + " --help)");
-      }
-    } else if (scenePath.empty()) {
-      scenePath = findScene(argument);
-    } else {
-      throw UsageError("unexpected argument '" + argument + "': i2d " + command +
-                       " takes one SCENE");
+/// Turns the named overlays (or all) on or off.
+void switchOverlays(Overlays& overlays, const std::vector<std::string>& names, bool on) {
+  for (const std::string& name : names) {
+    for (const auto& [field, member] : overlayFields()) {
+      if (name == "all" || name == field) overlays.*member = on;
     }
   }
-  if (scenePath.empty()) throw UsageError("i2d " + command + " needs a SCENE file");
-}
-
-/// --steps, --dt and --set; --solver and --preset too when the command runs one solver.
-void addSceneHandlers(Handlers& handlers, SceneOptions& options, bool withSolver) {
-  if (withSolver) {
-    handlers.options["--solver"] = [&](const std::string& value) {
-      options.solver = checkSolver(value);
-    };
-    handlers.options["--preset"] = [&](const std::string& value) { options.preset = value; };
-  }
-  handlers.options["--steps"] = [&](const std::string& value) {
-    options.steps = parseInteger(value, "--steps", 0);
-    checkWorldRange(*options.steps, "--steps", "steps", value);
-  };
-  handlers.options["--dt"] = [&](const std::string& value) {
-    options.dt = parsePositive(value, "--dt");
-    checkWorldRange(*options.dt, "--dt", "dt", value);
-  };
-  handlers.options["--set"] = [&](const std::string& value) {
-    checkAssignment(value, "--set");
-    options.settings.push_back(value);
-  };
 }
 
 /// The smallest side --size accepts: room for the strips and a scene.
@@ -248,210 +139,361 @@ constexpr int kMinFrameSide = 160;
 /// --size WxH: two integers of at least kMinFrameSide, at most the frame pixel limit a scene's
 /// [render] table has (impulse2d::kMostFramePixels) together.
 FrameSize parseSize(const std::string& text) {
-  const size_t x = text.find('x');
-  const std::string usage =
-      "option --size needs WIDTHxHEIGHT in pixels (e.g. 1280x720), not '" + text + "'";
-  if (x == std::string::npos) throw UsageError(usage);
   FrameSize size;
-  const char* end = text.data() + text.size();
-  const auto [widthEnd, widthError] = std::from_chars(text.data(), text.data() + x, size.width);
-  const auto [heightEnd, heightError] = std::from_chars(text.data() + x + 1, end, size.height);
-  if (widthError != std::errc() || heightError != std::errc() || widthEnd != text.data() + x ||
-      heightEnd != end) {
-    throw UsageError(usage);
+  char x = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &size.width, &x, &size.height, &rest) != 3 ||
+      x != 'x' || !std::isdigit(static_cast<unsigned char>(text.front()))) {
+    throw CLI::ValidationError("--size",
+                               "needs WIDTHxHEIGHT in pixels (e.g. 1280x720), not '" + text + "'");
   }
   if (size.width < kMinFrameSide || size.height < kMinFrameSide ||
       long(size.width) * size.height > impulse2d::kMostFramePixels) {
-    throw UsageError("option --size: each side at least " + std::to_string(kMinFrameSide) +
-                     " pixels and at most " + std::to_string(impulse2d::kMostFramePixels) +
-                     " pixels in all, not '" + text + "'");
+    throw CLI::ValidationError("--size", "each side at least " + std::to_string(kMinFrameSide) +
+                                             " pixels and at most " +
+                                             std::to_string(impulse2d::kMostFramePixels) +
+                                             " pixels in all, not '" + text + "'");
   }
   return size;
 }
 
-impulse2d::render::ImageFormat parseFormat(const std::string& text) {
-  using impulse2d::render::ImageFormat;
+/// The frames' formats by name: png, svg, pdf.
+std::map<std::string, ImageFormat> imageFormats() {
+  std::map<std::string, ImageFormat> formats;
   for (const ImageFormat format : {ImageFormat::Png, ImageFormat::Svg, ImageFormat::Pdf}) {
-    if (text == impulse2d::render::extensionOf(format)) return format;
+    formats[impulse2d::render::extensionOf(format)] = format;
   }
-  throw UsageError("unknown format '" + text + "' for --format (known: png, svg, pdf)");
+  return formats;
 }
 
-/// --frames, --every, --video and the overlay switches.
-void addFrameHandlers(Handlers& handlers, FrameOptions& options, int& every) {
-  handlers.options["--frames"] = [&](const std::string& value) { options.directory = value; };
-  handlers.options["--every"] = [&](const std::string& value) {
-    every = parseInteger(value, "--every", 1);
+/// --no-overlays, --hide and --show, applied in the order given.
+void addOverlaySwitches(CLI::App& command, Overlays& overlays) {
+  command
+      .add_flag_callback(
+          "--no-overlays", [&overlays] { switchOverlays(overlays, {"all"}, false); },
+          "frames show the bodies in their state colours only")
+      ->trigger_on_parse();
+  const auto addList = [&](const std::string& name, bool on, const std::string& description) {
+    command
+        .add_option_function<std::vector<std::string>>(
+            name,
+            [&overlays, on](const std::vector<std::string>& names) {
+              switchOverlays(overlays, names, on);
+            },
+            description)
+        ->type_name("LIST")
+        ->delimiter(',')
+        ->check(CLI::IsMember(overlayNames()))
+        ->trigger_on_parse();
   };
-  handlers.switches["--video"] = [&] { options.video = true; };
-  handlers.options["--animation"] = [&](const std::string& value) {
-    if (value != "gif" && value != "mp4") {
-      throw UsageError("unknown animation kind '" + value + "' for --animation (known: gif, mp4)");
-    }
-    options.animation = value;
-  };
-  handlers.options["--format"] = [&](const std::string& value) {
-    options.format = parseFormat(value);
-  };
-  handlers.options["--size"] = [&](const std::string& value) { options.size = parseSize(value); };
-  handlers.options["--theme"] = [&](const std::string& value) {
-    if (value != "screen" && value != "print") {
-      throw UsageError("unknown theme '" + value + "' for --theme (known: screen, print)");
-    }
-    options.printTheme = value == "print";
-  };
-  handlers.switches["--no-overlays"] = [&] {
-    switchOverlays(options.overlays, "all", false, "--no-overlays");
-  };
-  handlers.options["--hide"] = [&](const std::string& value) {
-    switchOverlays(options.overlays, value, false, "--hide");
-  };
-  handlers.options["--show"] = [&](const std::string& value) {
-    switchOverlays(options.overlays, value, true, "--show");
-  };
+  addList("--hide", false, "turn these overlays off, LIST comma-separated");
+  addList("--show", true,
+          "turn these overlays on (contact_normals, weights and velocities are off by default)");
 }
 
-/// Switches and per-step output need a frame directory to write into.
-void requireFrames(const FrameOptions& frames, const std::string& what) {
-  if (!frames.directory) throw UsageError(what + " needs --frames DIR");
+/// The scene file: a path, or a shipped scene's name (scene_search.h).
+void addScene(CLI::App& command, SceneOptions& options) {
+  command.add_option("SCENE", options.scenePath, "a scene file, or a shipped scene's name")
+      ->required()
+      ->transform([](std::string name) { return findScene(name); });
 }
 
-std::vector<std::string> parseSolverList(const std::string& value) {
-  std::vector<std::string> solvers = splitList(value, ',', "--solvers");
-  for (const std::string& solver : solvers) checkSolver(solver);
-  return solvers;
+/// --solver and --preset, for the commands that run one solver.
+void addSolverOptions(CLI::App& command, SceneOptions& options) {
+  command
+      .add_option("--solver", options.solver,
+                  "run this solver instead of the scene's; its settings are then the defaults, "
+                  "change them with --set")
+      ->type_name("NAME")
+      ->check(CLI::IsMember(impulse2d::simulationNames()));
+  command
+      .add_option("--preset", options.preset,
+                  "the solver's settings as its authors published them (i2d presets), applied "
+                  "after --solver and before --set")
+      ->type_name("NAME");
 }
 
-/// `--solvers` of compare: each entry SOLVER or SOLVER:PRESET, one panel each, labelled with it.
-std::vector<PanelOption> parseSolverPanels(const std::string& value) {
-  std::vector<PanelOption> panels;
-  for (const std::string& entry : splitList(value, ',', "--solvers")) {
-    const size_t colon = entry.find(':');
-    PanelOption panel{entry, checkSolver(entry.substr(0, colon)), std::nullopt, {}};
-    if (colon != std::string::npos) {
-      panel.preset = entry.substr(colon + 1);
-      checkPreset(*panel.solver, *panel.preset);
-    }
-    panels.push_back(panel);
-  }
-  return panels;
+/// --steps, --dt and --set: the [world] and [solver] keys a command line may change.
+void addSceneOverrides(CLI::App& command, SceneOptions& options) {
+  command.add_option("--steps", options.steps, "number of steps instead of [world] steps")
+      ->type_name("N")
+      ->check(worldRange("steps"));
+  command.add_option("--dt", options.dt, "time step in seconds instead of [world] dt")
+      ->type_name("S")
+      ->check(worldRange("dt"));
+  command
+      .add_option("--set", options.settings,
+                  "change one setting as a scene file would, SECTION world, solver (the solver's "
+                  "own settings) or render (the view); repeatable, applied in order after "
+                  "--solver: --set solver.velocity_iterations=20 --set "
+                  "world.gravity=[0,-1.62] --set render.follow=box; a bare word is a string")
+      ->type_name("SECTION.KEY=VALUE")
+      ->check(kAssignment);
 }
 
-}  // namespace
-
-PanelOption parsePanel(const std::string& text) {
-  const size_t colon = text.find(':');
-  PanelOption panel;
-  panel.label = trim(text.substr(0, colon));
-  if (panel.label.empty()) {
-    throw UsageError("option --panel needs 'LABEL: section.key=value; ...', not '" + text + "'");
-  }
-  if (colon == std::string::npos && text.find('=') != std::string::npos) {
-    throw UsageError(
-        "option --panel needs a colon after its label, 'LABEL: section.key=value; "
-        "...', not '" +
-        text + "'");
-  }
-  const std::string assignments = colon == std::string::npos ? "" : trim(text.substr(colon + 1));
-  if (!assignments.empty()) panel.settings = splitList(assignments, ';', "--panel");
-  for (const std::string& assignment : panel.settings) {
-    checkAssignment(assignment, "--panel");
-  }
-  return panel;
+/// --frames, --every and how the frames look; --video, --animation and the overlay switches.
+void addFrameOptions(CLI::App& command, FrameOptions& options, int& every) {
+  CLI::Option* frames =
+      command.add_option("--frames", options.directory, "write frames under DIR/<scene>/")
+          ->type_name("DIR");
+  command.add_option("--every", every, "record every K-th step (K >= 1), plus step 0 and the last")
+      ->type_name("K")
+      ->check(CLI::Range(1, mostSteps()).description(""));
+  command
+      .add_option_function<std::string>(
+          "--format",
+          [&options](const std::string& name) { options.format = imageFormats().at(name); },
+          "the frames' and sheet's format (default png); svg and pdf are vector drawings with "
+          "their text as text")
+      ->type_name("FORMAT")
+      ->check(CLI::IsMember(imageFormats()));
+  command
+      .add_option_function<std::string>(
+          "--size", [&options](const std::string& text) { options.size = parseSize(text); },
+          "the frames' size in pixels, strips included (default: the scene's [render] width "
+          "and height); the view is fitted into it")
+      ->type_name("WxH");
+  command
+      .add_option_function<std::string>(
+          "--theme",
+          [&options](const std::string& theme) { options.printTheme = theme == "print"; },
+          "print: white background and dark lines, for handouts and slides (default screen)")
+      ->type_name("THEME")
+      ->check(CLI::IsMember({"screen", "print"}));
+  command
+      .add_flag("--video", options.video,
+                "also write DIR/<scene>/<scene>.mp4 in real time (needs ffmpeg on PATH)")
+      ->needs(frames);
+  command
+      .add_option("--animation", options.animation,
+                  "also write one file of the frames, in real time: gif (always possible, "
+                  "DIR/<scene>/<scene>.gif) or mp4 (needs ffmpeg on PATH)")
+      ->type_name("KIND")
+      ->check(CLI::IsMember({"gif", "mp4"}))
+      ->needs(frames);
+  addOverlaySwitches(command, options.overlays);
 }
 
-RunOptions parseRunOptions(const std::vector<std::string>& arguments) {
-  RunOptions options;
-  Handlers handlers;
-  addSceneHandlers(handlers, options.scene, true);
-  addFrameHandlers(handlers, options.frames, options.every);
-  handlers.options["--csv"] = [&](const std::string& value) { options.csvPath = value; };
-  handlers.options["--contacts"] = [&](const std::string& value) { options.contactsPath = value; };
-  handlers.options["--trace-step"] = [&](const std::string& value) {
-    options.traceStep = parseInteger(value, "--trace-step", 1);
-    checkWorldRange(*options.traceStep, "--trace-step", "steps", value);
-  };
-  handlers.options["--error-vs-reference"] = [&](const std::string& value) {
-    options.errorVsReferencePath = value;
-  };
-  handlers.options["--plots"] = [&](const std::string& value) { options.plots = value; };
-  parse(arguments, "run", handlers, options.scene.scenePath);
-  if (options.errorVsReferencePath &&
-      (options.csvPath || options.contactsPath || options.frames.directory || options.traceStep ||
-       options.plots)) {
-    throw UsageError(
-        "--error-vs-reference writes its own CSV only; leave out --csv, --contacts, --frames, "
-        "--trace-step and --plots");
-  }
+/// What --error-vs-reference and --trace-step refuse beside them, and the checks that depend on
+/// two options' values.
+void checkRunOutputs(const RunOptions& options) {
   if (options.csvPath && options.contactsPath &&
       sameOutputFile(*options.csvPath, *options.contactsPath)) {
     throw UsageError("--csv and --contacts both write '" + *options.contactsPath +
                      "'; give each its own file");
   }
-  if (options.frames.video) requireFrames(options.frames, "--video");
   if ((options.frames.video || options.frames.animation == std::optional<std::string>("mp4")) &&
-      options.frames.format != impulse2d::render::ImageFormat::Png) {
+      options.frames.format != ImageFormat::Png) {
     throw UsageError("a video is made of PNG frames; leave out --format or --video");
   }
-  if (options.frames.animation) requireFrames(options.frames, "--animation");
-  if (options.traceStep) requireFrames(options.frames, "--trace-step");
-  if (options.traceStep && (options.csvPath || options.contactsPath || options.frames.video ||
-                            options.frames.animation)) {
-    throw UsageError(
-        "--trace-step writes trace frames (and --plots) only; leave out --csv, --contacts, "
-        "--video and --animation");
+}
+
+void addRun(CLI::App& app, RunOptions& options) {
+  CLI::App* run = app.add_subcommand(
+      "run",
+      "run a scene, print a summary; optionally write its trajectory (--csv), PNG frames and a "
+      "contact sheet (--frames), or one frame per solver event of one step (--trace-step)");
+  addScene(*run, options.scene);
+  addSolverOptions(*run, options.scene);
+  addSceneOverrides(*run, options.scene);
+  CLI::Option* csv =
+      run->add_option("--csv", options.csvPath,
+                      "write the trajectory; FILE appears only when complete; - or /dev/stdout "
+                      "is standard output, a device or pipe is written in place")
+          ->type_name("FILE");
+  CLI::Option* contacts =
+      run->add_option("--contacts", options.contactsPath,
+                      "write every contact point's forces per recorded step: bodies, point, "
+                      "normal, impulses and forces, mu, the limit mu N, static or sliding, each "
+                      "body's applied load (header below); FILE appears when complete")
+          ->type_name("FILE");
+  addFrameOptions(*run, options.frames, options.every);
+  CLI::Option* frames = run->get_option("--frames");
+  frames->description(
+      "write PNG frames DIR/<scene>/<scene>_00000.png, _00001.png, ... (one per recorded step, "
+      "numbered without gaps), the contact sheet DIR/<scene>/<scene>_sheet.png and the viewer "
+      "page DIR/<scene>/index.html (open it in a browser: slider, arrow keys, each frame's "
+      "figures)");
+  CLI::Option* plots =
+      run->add_option("--plots", options.plots,
+                      "gnuplot PNGs of the run against time: DIR/<scene>_kinetic.png, "
+                      "_potential.png, _total.png (energy), _contacts.png (contact points), "
+                      "_penetration.png (largest); with --trace-step, the velocity error each "
+                      "solver event of the step removes, DIR/<scene>_stepNNNNN_velocity_error.png")
+          ->type_name("DIR");
+  CLI::Option* trace =
+      run->add_option("--trace-step", options.traceStep,
+                      "run to step N and draw one frame per solver event of that step, "
+                      "DIR/<scene>/<scene>_stepNNNNN_00000.png, ..., and its sheet "
+                      "<scene>_stepNNNNN_sheet.png; box2d cannot be traced")
+          ->type_name("N")
+          ->check(CLI::Range(1, mostSteps()).description("1 to the run's steps"))
+          ->needs(frames)
+          ->excludes(csv)
+          ->excludes(contacts)
+          ->excludes(run->get_option("--video"))
+          ->excludes(run->get_option("--animation"));
+  run->add_option("--error-vs-reference", options.errorVsReferencePath,
+                  "at every step also solve the method's pre-solve state exactly (the global "
+                  "reference) and write solve,t,points,impulse_error,violation to FILE: "
+                  "||λ - λ*||/||λ*|| and the worst violated contact condition; the summary "
+                  "gives their median and largest (docs/global-reference.md)")
+      ->type_name("FILE")
+      ->excludes(csv)
+      ->excludes(contacts)
+      ->excludes(frames)
+      ->excludes(trace)
+      ->excludes(plots);
+  run->callback([&options] { checkRunOutputs(options); });
+  run->footer(kRunFooter);
+}
+
+void addCheck(CLI::App& app, CheckOptions& options) {
+  CLI::App* check = app.add_subcommand(
+      "check",
+      "validate a scene and print what it holds, marking each solver setting that differs from "
+      "the published method");
+  addScene(*check, options.scene);
+  addSolverOptions(*check, options.scene);
+  addSceneOverrides(*check, options.scene);
+  check->footer(kCheckFooter);
+}
+
+/// The panels of `--solvers`: each entry SOLVER or SOLVER:PRESET, labelled with it.
+void addSolverPanels(std::vector<PanelOption>& panels, const std::vector<std::string>& entries) {
+  for (const std::string& entry : entries) {
+    const size_t colon = entry.find(':');
+    PanelOption panel{entry, entry.substr(0, colon), std::nullopt, {}};
+    if (colon != std::string::npos) panel.preset = entry.substr(colon + 1);
+    panels.push_back(panel);
   }
-  return options;
 }
 
-CheckOptions parseCheckOptions(const std::vector<std::string>& arguments) {
-  CheckOptions options;
-  Handlers handlers;
-  addSceneHandlers(handlers, options.scene, true);
-  parse(arguments, "check", handlers, options.scene.scenePath);
-  return options;
+void addCompare(CLI::App& app, CompareOptions& options) {
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "run the scene once per solver (--solvers) or once per set of settings (--panel) and "
+      "write the runs side by side as frames");
+  addScene(*compare, options.scene);
+  const std::string panelsGroup = "panels (one of the two)";
+  CLI::Option* solvers =
+      compare
+          ->add_option_function<std::vector<std::string>>(
+              "--solvers",
+              [&options](const std::vector<std::string>& entries) {
+                addSolverPanels(options.panels, entries);
+              },
+              "one panel per solver, labelled with its name, LIST comma-separated; "
+              "SOLVER:PRESET runs a preset: --solvers sequential,sequential:box2d_2_4 shows "
+              "Box2D 2.4.1's method beside our default")
+          ->type_name("LIST")
+          ->delimiter(',')
+          ->check(kSolverAndPreset)
+          ->group(panelsGroup);
+  compare
+      ->add_option_function<std::vector<std::string>>(
+          "--panel",
+          [&options](const std::vector<std::string>& texts) {
+            for (const std::string& text : texts) options.panels.push_back(parsePanel(text));
+          },
+          "one panel, repeatable, SPEC 'LABEL: SECTION.KEY=VALUE; SECTION.KEY=VALUE': the "
+          "scene with these --set changes, labelled LABEL; the changes after ':' are separated "
+          "by ';' and may be left out")
+      ->type_name("SPEC")
+      ->group(panelsGroup)
+      ->excludes(solvers);
+  addSolverOptions(*compare, options.scene);
+  compare->get_option("--solver")->description("the solver of every --panel panel");
+  compare->get_option("--preset")->description("the preset of every --panel panel");
+  addSceneOverrides(*compare, options.scene);
+  addFrameOptions(*compare, options.frames, options.every);
+  compare->get_option("--frames")->required();
+  compare
+      ->add_option("--plots", options.plots,
+                   "the panels' figures overlaid, one curve per panel: "
+                   "DIR/<scene>_compare_kinetic.png, ... as for i2d run")
+      ->type_name("DIR");
+  compare->callback([&options] {
+    if (options.panels.empty()) throw UsageError("i2d compare needs --solvers or --panel");
+  });
+  compare->footer(kCompareFooter);
 }
 
-CompareOptions parseCompareOptions(const std::vector<std::string>& arguments) {
-  CompareOptions options;
-  Handlers handlers;
-  addSceneHandlers(handlers, options.scene, true);
-  addFrameHandlers(handlers, options.frames, options.every);
-  bool bySolver = false;
-  bool byPanel = false;
-  handlers.options["--solvers"] = [&](const std::string& value) {
-    for (const PanelOption& panel : parseSolverPanels(value)) options.panels.push_back(panel);
-    bySolver = true;
-  };
-  handlers.options["--panel"] = [&](const std::string& value) {
-    options.panels.push_back(parsePanel(value));
-    byPanel = true;
-  };
-  handlers.options["--plots"] = [&](const std::string& value) { options.plots = value; };
-  parse(arguments, "compare", handlers, options.scene.scenePath);
-  if (options.panels.empty()) throw UsageError("i2d compare needs --solvers or --panel");
-  if (bySolver && byPanel) {
-    throw UsageError("i2d compare takes either --solvers or --panel, not both");
-  }
-  requireFrames(options.frames, "i2d compare");
-  return options;
-}
-
-AgreeOptions parseAgreeOptions(const std::vector<std::string>& arguments) {
-  AgreeOptions options;
+void addAgree(CLI::App& app, AgreeOptions& options) {
+  CLI::App* agree =
+      app.add_subcommand("agree", "print how far each method strays from Box2D, as Markdown");
+  addScene(*agree, options.scene);
   options.solvers = impulse2d::solverNames();
-  Handlers handlers;
-  addSceneHandlers(handlers, options.scene, false);
-  handlers.options["--solvers"] = [&](const std::string& value) {
-    options.solvers = parseSolverList(value);
-    if (std::find(options.solvers.begin(), options.solvers.end(), impulse2d::kBox2dName) !=
-        options.solvers.end()) {
-      throw UsageError("--solvers of i2d agree lists our methods; box2d is always the reference");
+  agree
+      ->add_option("--solvers", options.solvers,
+                   "the methods to measure, LIST comma-separated (default " +
+                       CLI::detail::join(options.solvers, ",") + "); Box2D is always the reference")
+      ->type_name("LIST")
+      ->delimiter(',')
+      ->check(CLI::IsMember(impulse2d::solverNames()));
+  agree->add_flag("--summary", options.summaryOnly,
+                  "the summary table only (for scenes of many bodies)");
+  addSceneOverrides(*agree, options.scene);
+  agree->footer(kAgreeFooter);
+}
+
+/// The command named first, or a usage error naming what is there instead.
+void checkCommandName(const CLI::App& app, const std::vector<std::string>& arguments) {
+  if (arguments.empty()) throw UsageError("no command given (see i2d --help)");
+  const std::string& name = arguments.front();
+  if (name == "--help" || name == "-h" || name == "help") return;
+  if (name.rfind('-', 0) == 0)
+    throw UsageError("no command given before '" + name + "' (see i2d --help)");
+  for (const CLI::App* command : app.get_subcommands({})) {
+    if (command->get_name() == name) return;
+  }
+  throw UsageError("unknown command '" + name + "' (see i2d --help)");
+}
+
+}  // namespace
+
+CommandLine parseCommandLine(const std::vector<std::string>& arguments) {
+  CommandLine line;
+  CLI::App app("i2d - run, draw, compare and check impulse2d scene files", "i2d");
+  app.formatter(std::make_shared<HelpFormatter>());
+  app.set_help_flag("-h,--help", "print this help");
+  app.require_subcommand(1);
+  app.footer(generalFooter());
+  app.option_defaults()
+      ->group(kOptionsGroup)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
+      ->disable_flag_override();
+  addRun(app, line.run);
+  addCompare(app, line.compare);
+  addAgree(app, line.agree);
+  addCheck(app, line.check);
+  for (CLI::App* command : app.get_subcommands({})) command->get_help_ptr()->group(kOptionsGroup);
+  app.add_subcommand("presets", "list the presets: each method as its authors published it")
+      ->footer(kPresetsFooter)
+      ->get_help_ptr()
+      ->group("options");
+  checkCommandName(app, arguments);
+  try {
+    if (arguments.front() == "help") throw CLI::CallForHelp();
+    app.parse(std::vector<std::string>(arguments.rbegin(), arguments.rend()));
+  } catch (const CLI::CallForHelp&) {
+    line.help = app.help();
+    return line;
+  } catch (const CLI::ParseError& error) {
+    const std::vector<CLI::App*> chosen = app.get_subcommands();
+    std::string message = error.what();
+    if (dynamic_cast<const CLI::ExtrasError*>(&error) && !chosen.empty()) {
+      message += " (see i2d " + chosen.front()->get_name() + " --help)";
     }
-  };
-  handlers.switches["--summary"] = [&] { options.summaryOnly = true; };
-  parse(arguments, "agree", handlers, options.scene.scenePath);
-  return options;
+    throw UsageError(message);
+  }
+  const std::map<std::string, Command> commands = {{"run", Command::Run},
+                                                   {"check", Command::Check},
+                                                   {"compare", Command::Compare},
+                                                   {"agree", Command::Agree},
+                                                   {"presets", Command::Presets}};
+  line.command = commands.at(app.get_subcommands().front()->get_name());
+  return line;
 }
 
 }  // namespace i2d

@@ -1,6 +1,6 @@
-// The command line of each i2d command, parsed into plain options. Options take their value as
-// the next argument or after '=' (--steps 100, --steps=100); switches (--video) take none;
-// malformed options throw UsageError.
+// The command line of each i2d command, parsed into plain options (options.cpp declares each
+// option once on CLI11). Options take their value as the next argument or after '='
+// (--steps 100, --steps=100); switches (--video) take none; a bad command line throws UsageError.
 #pragma once
 
 #include <optional>
@@ -78,12 +78,20 @@ struct AgreeOptions {
   bool summaryOnly = false;          ///< --summary: the summary table without the body tables
 };
 
-RunOptions parseRunOptions(const std::vector<std::string>& arguments);
-CheckOptions parseCheckOptions(const std::vector<std::string>& arguments);
-CompareOptions parseCompareOptions(const std::vector<std::string>& arguments);
-AgreeOptions parseAgreeOptions(const std::vector<std::string>& arguments);
+/// The i2d commands; Help stands for any --help, whose text the command line holds.
+enum class Command { Help, Run, Check, Compare, Agree, Presets };
 
-/// The panel of `--panel 'LABEL: section.key=value; section.key=value'` (assignments optional).
-PanelOption parsePanel(const std::string& text);
+/// A parsed command line: the command and the options of it (the others stay default).
+struct CommandLine {
+  Command command = Command::Help;
+  std::string help;  ///< what --help prints, for Command::Help
+  RunOptions run;
+  CheckOptions check;
+  CompareOptions compare;
+  AgreeOptions agree;
+};
+
+/// Reads `i2d COMMAND ...` (the arguments after the program's name); throws UsageError.
+CommandLine parseCommandLine(const std::vector<std::string>& arguments);
 
 }  // namespace i2d
