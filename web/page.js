@@ -217,7 +217,7 @@ function plotPoints(canvas, points, colour) {
   const context = canvas.getContext("2d");
   const { width, height } = canvas;
   context.clearRect(0, 0, width, height);
-  context.strokeStyle = "#999";
+  context.strokeStyle = "grey";
   context.strokeRect(40, 10, width - 50, height - 40);
   if (points.length < 2) return;
   const xs = points.map((p) => p[0]), ys = points.map((p) => p[1]);
@@ -230,7 +230,7 @@ function plotPoints(canvas, points, colour) {
   context.beginPath();
   points.forEach(([x, y], k) => (k ? context.lineTo(px(x), py(y)) : context.moveTo(px(x), py(y))));
   context.stroke();
-  context.fillStyle = "#333";
+  context.fillStyle = "black";
   context.font = "11px 'DejaVu Sans'";
   context.fillText(y1.toPrecision(4), 2, 18);
   context.fillText(y0.toPrecision(4), 2, height - 32);
