@@ -39,13 +39,14 @@ using DrawingLog = std::vector<DrawnShape>;
 /// One outline of a fill or stroke: a polygon (closed) or an open line through its points, or a
 /// circle of `radius` round points[0].
 struct Outline {
-  std::vector<Vec2> points;
-  double radius = 0.0;  ///< > 0: a circle
-  bool closed = true;
+  std::vector<Vec2> points;  ///< pixels: the corners, or the circle's centre
+  double radius = 0.0;       ///< > 0: a circle
+  bool closed = true;        ///< a polygon (true) or an open line
 };
 
 /// One drawing command.
 struct Mark {
+  /// What the mark does.
   enum class Kind {
     Fill,       ///< fills the outlines (non-zero winding) in colour
     Stroke,     ///< strokes the outlines `size` wide, mitred joins, square-cut ends
@@ -55,7 +56,7 @@ struct Mark {
     Clip,       ///< clips to the rectangle from the origin of size `at`
     Restore,    ///< goes back to the last Save
   };
-  Kind kind = Kind::Fill;
+  Kind kind = Kind::Fill;         ///< what it does
   Color colour;                   ///< Fill, Stroke, Text
   double size = 0.0;              ///< Stroke: line width; Text: font size (pixels)
   std::vector<Outline> outlines;  ///< Fill, Stroke
@@ -80,7 +81,9 @@ class Canvas {
 /// A canvas that keeps its marks, measuring text with the function it is given.
 class MarkList : public Canvas {
  public:
+  /// The advance width (pixels) of plain text at a font size (pixels).
   using Measure = std::function<double(const std::string& text, double size)>;
+  /// An empty list whose text is measured by `measure`.
   explicit MarkList(Measure measure) : measure_(std::move(measure)) {}
   void paint(Mark mark) override { marks_.push_back(std::move(mark)); }
   double advance(const std::string& text, double size) override { return measure_(text, size); }
