@@ -6,7 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "impulse2d/render/drawing.h"
+#include "impulse2d/render/marks.h"
 
 namespace impulse2d::render {
 

@@ -595,33 +595,28 @@ void FrameRenderer::fitForces(const FrameState& state) {
   forces_ = fitForceScale(state.bodies, state.gravity, state.impulseTime, camera_, settings_);
 }
 
-Frame FrameRenderer::draw(const Simulation& simulation) {
-  return draw(captureFrame(simulation, scene_, settings_));
-}
-
-Frame FrameRenderer::draw(const FrameState& state) {
+Frame FrameRenderer::drawOnto(Drawing& whole, const FrameState& state) {
   if (forces_.metresPerNewton <= 0.0) fitForces(state);
-  return draw(state.bodies, state.manifolds, state.scene, state.headsUp, state.caption);
+  return drawOnto(whole, state.bodies, state.manifolds, state.scene, state.headsUp, state.caption);
 }
 
-Frame FrameRenderer::draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
-                          const SceneState& state, const std::vector<std::string>& headsUp,
-                          const std::string& caption, const SceneExtra& extra) {
+Frame FrameRenderer::drawOnto(Drawing& whole, const std::vector<Body>& bodies,
+                              const std::vector<Manifold>& manifolds, const SceneState& state,
+                              const std::vector<std::string>& headsUp, const std::string& caption,
+                              const SceneExtra& extra) {
   if (forces_.metresPerNewton <= 0.0)
     forces_ = fitForceScale(bodies, Vec2::Zero(), forces_.dt, camera_, settings_);
   const int height = frameHeight();
   const double top = camera_.headsUpHeight;
   Frame frame;
-  frame.picture = Picture(camera_.width, height);
   frame.sceneCorner = Vec2(0.0, top);
   frame.sceneSize = Vec2(camera_.width, camera_.height);
   frame.caption = caption;
   frame.title = headsUp.empty() ? scene_ : headsUp.front();
   frame.camera = camera_;
   frame.forces = forces_;
-  // One recording, the scene moved down under the heads-up strip: the strips are drawn after
-  // it and cover whatever of it reaches past the scene area.
-  Drawing whole(frame.picture, log_);
+  // One drawing, the scene moved down under the heads-up strip: the strips are drawn after it
+  // and cover whatever of it reaches past the scene area.
   whole.translate(Vec2(0.0, top));
   whole.rectangle(Vec2::Zero(), Vec2(camera_.width, camera_.height), settings_.colours.background);
   frame.drawn = drawScene(whole, camera_, bodies, manifolds, forces_, state, settings_);

@@ -194,6 +194,14 @@ class FrameRenderer {
   Frame draw(const std::vector<Body>& bodies, const std::vector<Manifold>& manifolds,
              const SceneState& state, const std::vector<std::string>& headsUp,
              const std::string& caption, const SceneExtra& extra = {});
+  /// The frame of a captured state drawn onto `whole`, a canvas of the frame's size (the
+  /// browser's MarkList): the Frame without its picture. draw() draws a picture this way.
+  Frame drawOnto(Drawing& whole, const FrameState& state);
+  /// The same for bodies and manifolds, with the heads-up lines and caption given.
+  Frame drawOnto(Drawing& whole, const std::vector<Body>& bodies,
+                 const std::vector<Manifold>& manifolds, const SceneState& state,
+                 const std::vector<std::string>& headsUp, const std::string& caption,
+                 const SceneExtra& extra = {});
 
   /// The camera of every frame.
   const Camera& camera() const { return camera_; }

@@ -7,29 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "impulse2d/render/event_story.h"
 #include "impulse2d/render/frame.h"
 #include "impulse2d/render/frame_writer.h"
 #include "impulse2d/simulation.h"
 #include "impulse2d/solver.h"
 
 namespace impulse2d::render {
-
-/// What one event did, in the lecture's words: the lines a trace frame adds under its heads-up.
-struct EventStory {
-  /// "velocity 3: contact 5.0" (soft step: "substep 3: ..."): the thumbnail's caption
-  std::string label;
-  std::vector<std::string> lines;  ///< the heads-up lines
-};
-
-/// The story of `event`, from the bodies before its impulse (`before`) and after it (`after`),
-/// under `solver` ("micro" picks the worst point first; the others sweep in order) with time step
-/// dt. `partner` is the other point of the same manifold that one impulse resolved with this one
-/// (the micro-collision resolver's pair of corners), -1 when it was resolved alone. Only the point
-/// that closes fastest is called "the worst closing speed"; a frictionless contact gets no
-/// friction line.
-EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
-                     const std::vector<Body>& after, const std::vector<Manifold>& manifolds,
-                     const std::string& solver, double dt, int partner = -1);
 
 /// Watches one step of a simulation and writes a frame for every solver event in it.
 class TraceRecorder : public SolverObserver {
@@ -50,9 +34,7 @@ class TraceRecorder : public SolverObserver {
   const Simulation& simulation_;
   FrameRenderer renderer_;
   FrameWriter& writer_;
-  std::vector<Body> before_;         ///< the bodies as the last event left them
-  std::vector<Body> impulseBefore_;  ///< the bodies before the impulse the event belongs to
-  SolverEvent last_;                 ///< the last event, to find a pair's second point
+  EventTeller teller_;
 };
 
 /// Runs the simulation up to step N (N ≥ 1: the step that ends with stepCount() == N), drawing
