@@ -22,12 +22,11 @@ std::pair<int, int> keyOf(const Manifold& manifold) {
 void carryOverImpulses(const Manifold& previous, Manifold& manifold) {
   for (int i = 0; i < manifold.pointCount; ++i) {
     ContactPoint& point = manifold.points[i];
-    for (int j = 0; j < previous.pointCount; ++j) {
-      if (previous.points[j].id != point.id) continue;
-      point.normalImpulse = previous.points[j].normalImpulse;
-      point.tangentImpulse = previous.points[j].tangentImpulse;
-      point.carried = true;
-    }
+    const int j = previous.pointMadeBy(point.id);
+    if (j < 0) continue;
+    point.normalImpulse = previous.points[j].normalImpulse;
+    point.tangentImpulse = previous.points[j].tangentImpulse;
+    point.carried = true;
   }
 }
 

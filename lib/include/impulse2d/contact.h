@@ -94,6 +94,15 @@ struct Manifold {
 
   /// The friction direction: the normal turned a quarter turn counter-clockwise.
   Vec2 tangent() const { return leftPerpendicular(normal); }
+
+  /// The index of the point the features `id` made, or -1: how a point is matched to the same
+  /// point a step earlier, to carry its impulses or its solver's state over.
+  int pointMadeBy(FeatureId id) const {
+    for (int i = 0; i < pointCount; ++i) {
+      if (points[i].id == id) return i;
+    }
+    return -1;
+  }
 };
 
 }  // namespace impulse2d

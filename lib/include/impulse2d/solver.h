@@ -123,6 +123,22 @@ class StepStages {
   virtual void storeImpulses() = 0;
 };
 
+/// The step of the rigid methods (micro-collisions, sequential impulses, the reference), in
+/// Box2D-Lite's order: the forces into the velocities, the method's impulses on the new
+/// velocities, the positions moved by them, then the method's pass on what penetration remains.
+/// Method has solveVelocities and solvePositions, each taking the StepContext.
+template <typename Method>
+void stepVelocitiesThenPositions(StepStages& stages, Method& method) {
+  const StepContext context = stages.findContacts({});
+  stages.integrateVelocities();
+  stages.stopAtNonFiniteBody();
+  method.solveVelocities(context);
+  stages.integratePositions();
+  method.solvePositions(context);
+  stages.refreshCaches();
+  stages.storeImpulses();
+}
+
 /// A contact method: one interface, one file per method (docs/architecture.md).
 class ContactSolver {
  public:

@@ -30,17 +30,10 @@ double tangentPart(const Vec2& pair) {
 }  // namespace
 // ---- velocity resolution ----
 
-// The lecture's update: the forces into the velocities, the impulses on the new velocities, the
-// positions moved by them, then what penetration remains resolved.
+// The lecture's update: the micro-collisions on the velocities the forces gave, then the
+// remaining penetration resolved once the bodies have moved.
 void MicroCollisionSolver::step(StepStages& stages) {
-  const StepContext context = stages.findContacts({});
-  stages.integrateVelocities();
-  stages.stopAtNonFiniteBody();
-  solveVelocities(context);
-  stages.integratePositions();
-  solvePositions(context);
-  stages.refreshCaches();
-  stages.storeImpulses();
+  stepVelocitiesThenPositions(stages, *this);
 }
 
 void MicroCollisionSolver::solveVelocities(const StepContext& context) {

@@ -213,14 +213,7 @@ class ColumnPairBlocks {
 
 // The step of sequential impulses, with the exact impulses in place of the sweeps.
 void ReferenceSolver::step(StepStages& stages) {
-  const StepContext context = stages.findContacts({});
-  stages.integrateVelocities();
-  stages.stopAtNonFiniteBody();
-  solveVelocities(context);
-  stages.integratePositions();
-  solvePositions(context);
-  stages.refreshCaches();
-  stages.storeImpulses();
+  stepVelocitiesThenPositions(stages, *this);
 }
 
 void ReferenceSolver::solveVelocities(const StepContext& context) {

@@ -11,17 +11,10 @@
 
 namespace impulse2d {
 
-// Box2D-Lite's and 2.4's step: the forces into the velocities, the impulses on the new
-// velocities, the positions moved by them, then the position pass.
+// Box2D-Lite's and 2.4's step: the sweeps on the velocities the forces gave, then the position
+// pass once the bodies have moved.
 void SequentialImpulseSolver::step(StepStages& stages) {
-  const StepContext context = stages.findContacts({});
-  stages.integrateVelocities();
-  stages.stopAtNonFiniteBody();
-  solveVelocities(context);
-  stages.integratePositions();
-  solvePositions(context);
-  stages.refreshCaches();
-  stages.storeImpulses();
+  stepVelocitiesThenPositions(stages, *this);
 }
 
 void SequentialImpulseSolver::solveVelocities(const StepContext& context) {

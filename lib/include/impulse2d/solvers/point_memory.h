@@ -36,9 +36,8 @@ class PointMemory {
       }
       while (entry != entries_.cend() && pairOf(*entry) < pairOf(manifold)) ++entry;
       for (; entry != entries_.cend() && pairOf(*entry) == pairOf(manifold); ++entry) {
-        for (int i = 0; i < manifold.pointCount; ++i) {
-          if (manifold.points[i].id == entry->id) current_[m][i] = entry->state;
-        }
+        const int i = manifold.pointMadeBy(entry->id);
+        if (i >= 0) current_[m][i] = entry->state;
       }
     }
   }
