@@ -14,8 +14,6 @@
 namespace impulse2d {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// How far along the normal a contact found `separation` apart moves from the middle of the gap
 /// to where the surfaces will touch, when one or both are circles (roundSurfaces): a circle
 /// touches a polygon at its own surface, and two circles where the line of centres divides as
