@@ -105,8 +105,8 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
       {"remove_acceleration_velocity", &s.removeAccelerationVelocity, "", kNone,
        "take the velocity the last update's acceleration built up out of the bounce target"},
       {"lower_restitution_at_low_speed", &s.lowerRestitutionAtLowSpeed, "", kNone,
-       "no bounce below `restitution_velocity_limit`"},
-      {"restitution_velocity_limit", &s.restitutionVelocityLimit, "m/s", closed(0.0, 1000.0),
+       "no bounce below `restitution_threshold`"},
+      {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
        "below this closing speed a contact does not bounce (Millington: 0.25)"},
       {"friction", &s.friction, "", kNone,
        "friction through the 2×2 contact matrix; off: frictionless normal impulses"},
@@ -161,10 +161,10 @@ void addFields(std::vector<SettingField>& fields, ContactTargetSettings& s) {
                   "fraction of the penetration beyond the slop the bias removes per step"},
                  {"allowed_penetration", &s.allowedPenetration, "m", closed(0.0, 1.0),
                   "the slop: penetration the bias and the position pass leave alone"},
-                 {"max_bias_velocity", &s.maxBiasVelocity, "m/s", closed(0.0, 1000.0),
+                 {"max_push_velocity", &s.maxPushVelocity, "m/s", closed(0.0, 1000.0),
                   "cap on the bias velocity"},
-                 {"restitution_velocity_threshold", &s.restitutionVelocityThreshold, "m/s",
-                  closed(0.0, 1000.0), "below this closing speed a contact does not bounce"}});
+                 {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
+                  "below this closing speed a contact does not bounce"}});
 }
 
 void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
@@ -188,8 +188,8 @@ SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
   settings.velocityIterations = 10;
   settings.convergedImpulseChange = 0.0;
   settings.targets.allowedPenetration = 0.01;
-  settings.targets.maxBiasVelocity = kNoLimit;               // Box2D-Lite caps no bias
-  settings.targets.restitutionVelocityThreshold = kNoLimit;  // and has no bounce
+  settings.targets.maxPushVelocity = kNoLimit;       // Box2D-Lite caps no bias
+  settings.targets.restitutionThreshold = kNoLimit;  // and has no bounce
   settings.positionPass.iterations = 0;
   settings.block.enabled = false;
   settings.blockPositionCorrection = false;
@@ -313,7 +313,7 @@ SoftStepSettings SoftStepSettings::box2dV3() {
   settings.recycleWithinFoundDistance = false;
   settings.recycleInWorldFrame = false;
   settings.renewRoundNormals = false;
-  settings.pairRestitution.enabled = false;
+  settings.restitutionBlock.enabled = false;
   settings.frictionInRestitution = false;
   settings.restitutionOnStepTotals = false;
   return settings;
@@ -361,12 +361,12 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
           {"renew_round_normals", &s.renewRoundNormals, "", kNone,
            "a manifold whose normal runs to a circle's centre is found anew every step (ours)"},
           {"restitution", &s.restitution, "", kNone, "a restitution pass after the substeps (v3)"},
-          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold, "m/s",
-           closed(0.0, 1000.0), "below this closing speed a contact does not bounce (v3: 1)"},
-          {"pair_restitution", &s.pairRestitution.enabled, "", kNone,
+          {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
+           "below this closing speed a contact does not bounce (v3: 1)"},
+          {"block_restitution", &s.restitutionBlock.enabled, "", kNone,
            "a two-point manifold whose points both bounce gets one 2×2 block of impulses (ours)"},
-          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit, "",
-           closed(1.0, 1e12), "...only while k₀₀² < this × det K"}};
+          {"block_condition_limit", &s.restitutionBlock.conditionLimit, "", closed(1.0, 1e12),
+           "...only while k₀₀² < this × det K"}};
 }
 
 }  // namespace impulse2d

@@ -40,7 +40,7 @@ struct WorldSettings {
   /// hundredth of a body width of 1 m per second is invisible at 60 frames a second.
   double sleepLinearSpeed = 0.01;
   /// rad/s. The angular speed below which a body counts as resting: Box2D's 2 degrees a second.
-  double sleepAngularSpeed = 2.0 * 3.14159265358979323846 / 180.0;
+  double sleepAngularSpeed = 2.0 * kPi / 180.0;
   /// s. An island sleeps once every body in it has rested this long (Box2D's half a second:
   /// long enough that a body at the top of a bounce or a swing is not frozen).
   double timeToSleep = 0.5;
@@ -71,9 +71,9 @@ struct ContactTargetSettings {
   /// stay touching. Its one home for each solver.
   double allowedPenetration = 0.005;
   /// m/s. Cap on the bias velocity, so deep overlaps separate without an explosion.
-  double maxBiasVelocity = 4.0;
+  double maxPushVelocity = 4.0;
   /// m/s. Below this closing speed a contact does not bounce (Box2D 2.4: 1 m/s).
-  double restitutionVelocityThreshold = 1.0;
+  double restitutionThreshold = 1.0;
 };
 
 /// The rules above with penetration bias off: the reference's default.

@@ -136,9 +136,9 @@ void writeVector(const std::filesystem::path& path, const Picture& picture, Imag
 
 }  // namespace
 
-Color withOpacity(Color color, double opacity) {
-  color.a = std::uint8_t(std::lround(color.a * std::clamp(opacity, 0.0, 1.0)));
-  return color;
+Color withOpacity(Color colour, double opacity) {
+  colour.a = std::uint8_t(std::lround(colour.a * std::clamp(opacity, 0.0, 1.0)));
+  return colour;
 }
 
 double lineHeight(double size) {
@@ -202,7 +202,7 @@ void Drawing::flush() {
       if (outline.radius > kSmallCircle) {
         cairo_new_sub_path(cairo_);
         cairo_arc(cairo_, outline.points[0].x(), outline.points[0].y(), outline.radius, 0.0,
-                  2.0 * M_PI);
+                  2.0 * kPi);
         continue;
       }
       if (outline.radius > 0.0) {
@@ -210,7 +210,7 @@ void Drawing::flush() {
         const Vec2& centre = outline.points[0];
         cairo_move_to(cairo_, centre.x() + outline.radius, centre.y());
         for (int k = 1; k < kSmallCircleSides; ++k) {
-          const double angle = 2.0 * M_PI * k / kSmallCircleSides;
+          const double angle = 2.0 * kPi * k / kSmallCircleSides;
           cairo_line_to(cairo_, centre.x() + outline.radius * std::cos(angle),
                         centre.y() + outline.radius * std::sin(angle));
         }

@@ -51,6 +51,17 @@ struct RetiredKey {
 };
 
 constexpr RetiredKey kRetiredKeys[] = {
+    {"micro", "restitution_velocity_limit", "is now 'restitution_threshold', Box2D's word"},
+    {"sequential", "restitution_velocity_threshold",
+     "is now 'restitution_threshold', Box2D's word"},
+    {"reference", "restitution_velocity_threshold", "is now 'restitution_threshold', Box2D's word"},
+    {"soft_step", "restitution_velocity_threshold", "is now 'restitution_threshold', Box2D's word"},
+    {"sequential", "max_bias_velocity", "is now 'max_push_velocity', Box2D's word"},
+    {"reference", "max_bias_velocity", "is now 'max_push_velocity', Box2D's word"},
+    {"soft_step", "pair_restitution",
+     "is now 'block_restitution': a two-point contact solved together is a block"},
+    {"soft_step", "pair_restitution_condition_limit",
+     "is now 'block_condition_limit', as in the other methods"},
     {"micro", "warm_start", "is now 'warm_starting', its name in every method"},
     {"soft_step", "recycle_round_normals",
      "is now 'renew_round_normals', with its meaning turned so that true turns the idea on: "

@@ -10,10 +10,10 @@ struct MicroCollisionSettings {
   /// Remove the velocity built up by the last update's acceleration from the bounce target:
   /// Δv = −vs − c·(vs − vacc). Off: a resting contact bounces on gravity's velocity (jitter).
   bool removeAccelerationVelocity = true;
-  /// Use zero restitution when the closing speed is under restitutionVelocityLimit.
+  /// Use zero restitution when the closing speed is under restitutionThreshold.
   bool lowerRestitutionAtLowSpeed = true;
   /// m/s. Below this closing speed a contact does not bounce. Millington uses 0.25.
-  double restitutionVelocityLimit = 0.25;
+  double restitutionThreshold = 0.25;
   /// Friction as impulses through the 2×2 contact matrix. Off: frictionless normal impulses.
   bool friction = true;
   /// m/s. Velocity resolution stops when no contact needs a larger velocity change; a bounce

@@ -53,7 +53,7 @@ struct SoftStepSettings {
   /// speed before the step (v3's b2ApplyRestitution); false: soft contacts do not bounce.
   bool restitution = true;
   /// m/s. Below this closing speed a contact does not bounce (v3: 1).
-  double restitutionVelocityThreshold = 1.0;
+  double restitutionThreshold = 1.0;
 
   // Ours beyond Box2D v3: each true turns a refinement on; the failure each fixes and its test
   // are in docs/soft-step.md, "The published method".
@@ -77,7 +77,7 @@ struct SoftStepSettings {
   bool renewRoundNormals = true;
   /// A two-point manifold whose points both bounce gets its restitution impulses as one exact
   /// 2×2 block (two_point_block.h), so a flat box leaves straight up.
-  BlockSolveSettings pairRestitution;
+  BlockSolveSettings restitutionBlock;
   /// One friction solve after a bounce, bounded by μ times the normal impulse with the bounce in
   /// it (Newton's and Coulomb's laws together).
   bool frictionInRestitution = true;
