@@ -65,7 +65,7 @@ std::vector<Vec2> ellipsePoints(FuzzedDataProvider& bytes) {
   std::vector<Vec2> points;
   for (int i = 0; i < count; ++i) {
     points.emplace_back(width * std::cos(angle), height * std::sin(angle));
-    angle += bytes.ConsumeFloatingPointInRange(0.0, 2.0 * M_PI / (count - 1));
+    angle += bytes.ConsumeFloatingPointInRange(0.0, 2.0 * impulse2d::kPi / (count - 1));
   }
   if (bytes.ConsumeBool()) std::reverse(points.begin(), points.end());
   return points;
@@ -86,7 +86,7 @@ Body body(FuzzedDataProvider& bytes) {
   const impulse2d::Shape bodyShape = shape(bytes);
   const Vec2 position(bytes.ConsumeFloatingPointInRange(-kLargestOffset, kLargestOffset),
                       bytes.ConsumeFloatingPointInRange(-kLargestOffset, kLargestOffset));
-  const double angle = bytes.ConsumeFloatingPointInRange(-M_PI, M_PI);
+  const double angle = bytes.ConsumeFloatingPointInRange(-impulse2d::kPi, impulse2d::kPi);
   return impulse2d::makeBody("fuzzed", impulse2d::BodyType::Dynamic, bodyShape, 1.0, position,
                              angle);
 }

@@ -305,7 +305,7 @@ Scene newtonsCradle(double balls) {
 /// tangential speed whenever μ ≥ tan θ. How deep a box is when its landing step is found depends
 /// on where in a step it reaches the slope, so kLandingBoxes boxes, kLandingSpacing (m) apart
 /// along the slope, fall from heights that differ by a fraction of a step's fall.
-constexpr double kSlopeAngle = 20.0 * M_PI / 180.0;
+constexpr double kSlopeAngle = 20.0 * kPi / 180.0;
 constexpr double kSlopeFriction = 0.5;
 constexpr int kLandingBoxes = 8;
 constexpr double kLandingSpacing = 3.0;
@@ -385,8 +385,8 @@ Scene arch(double friction) {
   Scene scene = baseScene("arch", kHorizonMost);
   scene.bodies.push_back(ground(material(friction)));
   for (int k = 0; k < kVoussoirs; ++k) {
-    const double from = M_PI * k / kVoussoirs;
-    const double to = M_PI * (k + 1) / kVoussoirs;
+    const double from = kPi * k / kVoussoirs;
+    const double to = kPi * (k + 1) / kVoussoirs;
     auto at = [](double radius, double angle) {
       return Vec2(radius * std::cos(angle), radius * std::sin(angle));
     };
@@ -405,7 +405,7 @@ Scene arch(double friction) {
 /// the vertical (rad), two tents this far apart (m, apex to apex) under a roof card this long.
 constexpr double kCardLength = 2.0;
 constexpr double kCardThickness = 0.05;
-constexpr double kCardLean = 20.0 * M_PI / 180.0;
+constexpr double kCardLean = 20.0 * kPi / 180.0;
 constexpr double kTentSpacing = 2.0;
 constexpr double kRoofLength = 3.0;
 /// Contacts under the roof: card on ground, roof on card.

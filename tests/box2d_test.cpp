@@ -101,7 +101,7 @@ TEST_CASE("a polygon of more than 8 vertices is rejected with the reason", "[box
   Scene scene = sceneWith("nonagon", 0);
   BodyDef nonagon = boxOnGround("nonagon", 0.5, 0.0);
   std::vector<Vec2> vertices;
-  for (int i = 0; i < 9; ++i) vertices.push_back(rotation(2.0 * M_PI * i / 9) * Vec2(1.0, 0.0));
+  for (int i = 0; i < 9; ++i) vertices.push_back(rotation(2.0 * kPi * i / 9) * Vec2(1.0, 0.0));
   nonagon.shape = makePolygon(vertices).shape;
   scene.bodies.push_back(nonagon);
   CHECK_THROWS_WITH(Box2dSimulation(scene), Catch::Contains("at most 8 vertices"));

@@ -192,7 +192,7 @@ TEST_CASE("a box lying flat on the ground touches at both bottom corners",
 }
 
 TEST_CASE("a rotated box touches the ground with one corner", "[contact][polygon]") {
-  const double angle = M_PI / 6.0;
+  const double angle = kPi / 6.0;
   const double cornerDrop = 0.5 * (std::sin(angle) + std::cos(angle));  // centre to lowest corner
   const Body slab = ground();
   const Body square = box(1.0, 1.0, Vec2(1.0, cornerDrop - 0.02), angle);
@@ -329,7 +329,7 @@ TEST_CASE("a point keeps its feature id when the reference face passes to the ot
 TEST_CASE("feature ids differ for different touching features", "[contact][feature-id]") {
   const Body slab = ground();
   const Manifold bottomFace = collideOnce(slab, box(1.0, 2.0, Vec2(0.0, 1.0 - 0.001)));
-  const Manifold sideFace = collideOnce(slab, box(1.0, 2.0, Vec2(0.0, 0.5 - 0.001), M_PI / 2.0));
+  const Manifold sideFace = collideOnce(slab, box(1.0, 2.0, Vec2(0.0, 0.5 - 0.001), kPi / 2.0));
   REQUIRE(bottomFace.pointCount == 2);
   REQUIRE(sideFace.pointCount == 2);
   const std::vector<FeatureId> bottomIds = ids(bottomFace);

@@ -273,7 +273,7 @@ TEST_CASE("tutorial: the slide against a t²/2, at dt and at dt/2", "[docs][tuto
   const double ran = slideDistance(scene, dt, scene.steps);
   checkFigure(page, "The last point is {6.82} m", ran);
   const double mu = std::sqrt(0.8 * 0.2);
-  const double a = 9.81 * (std::sin(M_PI / 6) - mu * std::cos(M_PI / 6));
+  const double a = 9.81 * (std::sin(kPi / 6) - mu * std::cos(kPi / 6));
   const double formula = a * 9.0 / 2.0;
   checkFigure(page, "against the formula's {6.78} m", formula);
   // Half the step, twice the steps: the same 3 s, and the gap to the formula halves.
@@ -479,7 +479,7 @@ TEST_CASE("ladder: the wall's push on the standing one, the other flat by 1.5 s"
   // "by t = 1.5 s it lies flat at the foot of its wall": its long side within 3° of the floor.
   const double angle = bodyNamed(*world, "slides").angle;
   INFO("docs/demos.md: the sliding ladder lies flat by t = 1.5 s; its angle is " << angle);
-  CHECK(std::abs(std::sin(angle)) < std::sin(3.0 * M_PI / 180.0));
+  CHECK(std::abs(std::sin(angle)) < std::sin(3.0 * kPi / 180.0));
 }
 
 TEST_CASE("soft step: the stack's settling and, without warm starting, its lean", "[docs][soft]") {

@@ -20,7 +20,7 @@ using namespace impulse2d;
 namespace {
 
 constexpr double g = 9.81;
-constexpr double kDegree = M_PI / 180.0;
+constexpr double kDegree = kPi / 180.0;
 
 /// The scene saved as `name` in docs/exercises.md, with `from` replaced by `to` if given (the
 /// page's "edit angle_deg to 32").

@@ -104,7 +104,7 @@ TEST_CASE("two thin boxes lying on each other keep their anchors a penetration a
   // bodies and both normals point the same way; each manifold is still consistent.
   const Body a = box(9.9999994045535736, 0.01, Vec2(-9.9996960256248713, -9.9999999999272404),
                      -3.1414967797905722);
-  const Body b = box(9.1413319397146218, 0.01, Vec2(-10.0, -10.0), -M_PI);
+  const Body b = box(9.1413319397146218, 0.01, Vec2(-10.0, -10.0), -kPi);
   Manifold ab;
   Manifold ba;
   REQUIRE(collide(a, b, 0.0, ab) == 2);

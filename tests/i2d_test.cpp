@@ -349,7 +349,7 @@ TEST_CASE("a state that becomes non-finite stops the run, keeping the rows so fa
 TEST_CASE("i2d check prints the solver, settings and bodies", "[i2d][check]") {
   const Outcome outcome = i2d("check " + kScenes + "bouncing_ball.toml");
   CHECK(outcome.exitCode == 0);
-  for (const char* text : {"solver micro", "dt = ", "restitution_velocity_limit = ",
+  for (const char* text : {"solver micro", "dt = ", "restitution_threshold = ",
                            "bodies 2 (1 static, 1 dynamic): 1 box 1 circle", "  ground: static box",
                            "  ball: dynamic circle radius 0.5 m"}) {
     INFO(text);

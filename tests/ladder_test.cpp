@@ -20,7 +20,6 @@ using namespace impulse2d;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kLength = 4.0;     // m
 constexpr double kThickness = 0.2;  // m
 

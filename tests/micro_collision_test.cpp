@@ -14,8 +14,6 @@ using namespace impulse2d;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// Records every solver event of a step.
 struct EventLog : SolverObserver {
   std::vector<SolverEvent> events;
@@ -240,7 +238,7 @@ TEST_CASE("micro: friction after a bounce does not push a face's two points apar
   const auto hexagon = [](double radius) {
     std::vector<Vec2> vertices;
     for (int i = 0; i < 6; ++i) {
-      const double at = 2.0 * 3.14159265358979323846 * i / 6.0;
+      const double at = 2.0 * kPi * i / 6.0;
       vertices.emplace_back(radius * std::cos(at), radius * std::sin(at));
     }
     return makePolygon(vertices).shape;

@@ -54,7 +54,7 @@ struct Line {
 };
 
 Line rampTop(double angleDegrees, const Vec2& centre, double height) {
-  const double a = angleDegrees * M_PI / 180.0;
+  const double a = angleDegrees * kPi / 180.0;
   const Vec2 normal(-std::sin(a), std::cos(a));
   return {centre + height / 2.0 * normal, normal};
 }
@@ -74,7 +74,7 @@ TEST_CASE("a box placed on a ramp touches its top face, turned to its slope", "[
   const SceneFile scene = parseScene(kBoxOnRamp, "on.toml");
   const BodyDef& box = bodyNamed(scene, "box");
   const Line top = rampTop(20.0, Vec2(1.0, -2.0), 1.0);
-  CHECK(box.angle == Approx(20.0 * M_PI / 180.0).margin(1e-12));
+  CHECK(box.angle == Approx(20.0 * kPi / 180.0).margin(1e-12));
   CHECK(std::abs(lowestAbove(worldVertices(box), top)) < 1e-9);
   // The centre sits 3 m up the face from its middle, half the box's height above it.
   const Vec2 along(std::cos(box.angle), std::sin(box.angle));
@@ -86,7 +86,7 @@ TEST_CASE("angle_deg turns a placed body from the face's slope, and its corner t
           "[scene-file][on]") {
   const SceneFile scene = parseScene(kBoxOnRamp + "angle_deg = 30.0\n", "on.toml");
   const BodyDef& box = bodyNamed(scene, "box");
-  CHECK(box.angle == Approx(50.0 * M_PI / 180.0).margin(1e-12));
+  CHECK(box.angle == Approx(50.0 * kPi / 180.0).margin(1e-12));
   CHECK(std::abs(lowestAbove(worldVertices(box), rampTop(20.0, Vec2(1.0, -2.0), 1.0))) < 1e-9);
 }
 

@@ -17,7 +17,6 @@ using namespace impulse2d;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kWallInside = 5.5;  ///< m: the walls' inner faces are x = ±5.5, the floor y = 0
 constexpr int kScenes = 100;
 constexpr int kSteps = 240;

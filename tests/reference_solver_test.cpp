@@ -305,7 +305,7 @@ namespace {
 
 /// A 1 × 0.5 box sliding at 6 m/s down a 30° slope (μ 0.9) into a vertical wall, restitution e.
 Scene boxIntoWall(double restitution, bool inTwoSolves) {
-  constexpr double kAngle = 30.0 * 3.14159265358979323846 / 180.0;
+  constexpr double kAngle = 30.0 * kPi / 180.0;
   constexpr double kFriction = 0.9;
   Scene scene = lecture::sceneWith("reference", 1.0 / 30.0);
   scene.solverSettings.reference.restitutionInTwoSolves = inTwoSolves;

@@ -105,7 +105,7 @@ TEST_CASE("lowering restitution alone needs a limit above gravity's hop speed",
   report("restitution lowering only, limit 0.25 m/s", lowLimit);
   CHECK(lowLimit.largestVerticalSpeed > 0.25 * lecture::kGravity * kDt);
 
-  restitutionOnly.restitutionVelocityLimit = 2.5 * lecture::kGravity * kDt;
+  restitutionOnly.restitutionThreshold = 2.5 * lecture::kGravity * kDt;
   const RestFigures highLimit = dropBox(restitutionOnly);
   report("restitution lowering only, limit 2.5 g dt", highLimit);
   CHECK(highLimit.largestVerticalSpeed < 1e-3);
@@ -142,7 +142,7 @@ TEST_CASE("a disc in a frictionless V rests with each wall pushing m g / (2 cos 
   for (const std::string solver : {"micro", "sequential", "soft_step", "reference"}) {
     for (const double degrees : {20.0, 45.0, 70.0}) {
       for (const double lift : {0.0, 0.2}) {
-        const double angle = degrees * 3.14159265358979323846 / 180.0;
+        const double angle = degrees * kPi / 180.0;
         Scene scene = lecture::sceneWith(solver, kDt);
         for (const double side : {-1.0, 1.0}) {  // walls whose top faces meet at the origin
           BodyDef wall = lecture::ground(0.0, side * angle);

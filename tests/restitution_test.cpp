@@ -15,7 +15,6 @@ using namespace impulse2d;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadius = 0.2;
 constexpr double kDropHeight = 1.0;  // m, of the ball's lowest point above the ground
 constexpr double kRestitution = 0.8;
@@ -153,7 +152,7 @@ FirstBounce flatBoxBounce(const std::string& solver, double restitution, double 
 // (1 + g·dt/v)² − 1 = 1.9 % at 240 Hz from 1 m (v = 4.4 m/s); 3 % allows that and the sampling.
 // Friction plays no part in a straight landing: a frictionless pair bounces the same (taken point
 // by point, such a pair leaves at 0.76 of e²h with e = 0.8). Soft step
-// bounces its pair as one block (pair_restitution); its speculative contact stops the box at the
+// bounces its pair as one block (block_restitution); its speculative contact stops the box at the
 // surface and the bounce leaves without the step's gravity, as its ball's does (0.98 of e²h).
 TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-bounces]") {
   for (const std::string solver : {"micro", "sequential", "reference", "soft_step"}) {
@@ -181,7 +180,7 @@ TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-
   CHECK(std::abs(pointByPoint.spin) > 1.0);
   const FirstBounce v3 =
       flatBoxBounce("soft_step", 0.8, 0.5,
-                    {"solver.pair_restitution=false", "solver.friction_in_restitution=false"});
+                    {"solver.block_restitution=false", "solver.friction_in_restitution=false"});
   std::cout << "figure: flat box, e = 0.8, soft step without pair restitution: spin " << v3.spin
             << " rad/s, apex " << v3.apex << " m (e^2 h = 0.64)\n";
   CHECK(v3.apex < 0.6 * 0.64);  // 0.34 m, spinning; 0.63 m with pair restitution
@@ -190,7 +189,7 @@ TEST_CASE("a box landing flat bounces straight up to e²h", "[restitution][pair-
 
 // Against a wall, with no gravity to muddy the bounce: a box sliding flat into it at 3 m/s leaves
 // at e times that, without turning, under every method. Point by point (soft step with
-// pair_restitution off, as Box2D v3) the first corner's impulse turns the box and the second's
+// block_restitution off, as Box2D v3) the first corner's impulse turns the box and the second's
 // then undoes part of the bounce: 1.31 m/s for 1.5, and 0.76 for a 0.3 m wide box.
 TEST_CASE("a box sliding flat into a wall rebounds at e times its speed, without turning",
           "[restitution][pair-bounces]") {

@@ -16,7 +16,6 @@ using namespace impulse2d;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadius = 0.5;  // m, to the vertices
 constexpr double kFriction = 1.0;
 

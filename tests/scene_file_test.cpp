@@ -62,7 +62,7 @@ std::string fieldNames(const std::vector<SettingField>& fields) {
 }
 
 double degrees(double d) {
-  return d * M_PI / 180.0;
+  return d * kPi / 180.0;
 }
 
 using scene_errors::errorOf;
@@ -141,7 +141,7 @@ TEST_CASE("angles in files are degrees, in the Scene radians", "[scene-file][uni
       "[[body]]\nshape = \"box\"\nsize = [2, 1]\nangle_deg = 90\nangular_velocity_deg = -180\n",
       "turned.toml");
   CHECK(scene.bodies[0].angle == Approx(degrees(90.0)));
-  CHECK(scene.bodies[0].angularVelocity == Approx(-M_PI));
+  CHECK(scene.bodies[0].angularVelocity == Approx(-kPi));
 }
 
 TEST_CASE("a polygon's position moves from its origin to its centroid", "[scene-file][polygon]") {
@@ -225,6 +225,11 @@ TEST_CASE("a renamed or removed solver key is refused with a hint naming what to
                 std::string(kOneBall)) ==
         "bad.toml:4:17: 'block_normals' was removed: it made results worse (docs/soft-step.md, "
         "\"Removed switches\")");
+  CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nrestitution_velocity_limit = 0.5\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:30: 'restitution_velocity_limit' is now 'restitution_threshold', Box2D's word");
+  CHECK(errorOf("[solver]\nmax_bias_velocity = 2\n" + std::string(kOneBall)) ==
+        "bad.toml:2:21: 'max_bias_velocity' is now 'max_push_velocity', Box2D's word");
   // The same key of another method is that method's business: sequential never had warm_start.
   CHECK(errorOf("[solver]\nwarm_start = false\n" + std::string(kOneBall))
             .find("unknown key 'warm_start' in [solver] for solver 'sequential'") !=

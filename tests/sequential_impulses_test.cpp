@@ -126,7 +126,7 @@ TEST_CASE("the penetration bias pushes an overlap out to the slop; without it th
 
 TEST_CASE("restitution comes from the closing speed before the solve, none under the threshold",
           "[sequential][restitution]") {
-  const double threshold = SequentialImpulseSettings{}.targets.restitutionVelocityThreshold;
+  const double threshold = SequentialImpulseSettings{}.targets.restitutionThreshold;
   SECTION("a fast ball bounces at e × its closing speed") {
     auto world = buildWorld(diskAbove(0.5, -5.0, 0.5));
     runSteps(*world, stepsIn(1.0));

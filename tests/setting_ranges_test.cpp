@@ -3,6 +3,7 @@
 // that multiply a run's work, on steps × bodies and on a frame's pixels are named when refused.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -50,6 +51,50 @@ std::string interval(const SettingRange& range, bool integer) {
   return text.substr(text.find_first_of("[("));
 }
 
+/// A field's default as the docs write it.
+std::string defaultValue(const SettingField& field) {
+  std::ostringstream text;
+  std::visit(
+      [&text](auto* value) {
+        if constexpr (std::is_same_v<decltype(value), Vec2*>) {
+          text << "[" << value->x() << ", " << value->y() << "]";
+        } else {
+          text << std::boolalpha << *value;
+        }
+      },
+      field.value);
+  return text.str();
+}
+
+std::string rangeColumn(const SettingField& field) {
+  if (std::holds_alternative<bool*>(field.value)) return "bool";
+  if (!field.range) return "finite";
+  const bool integer = std::holds_alternative<int*>(field.value);
+  return (integer ? "integer " : "") + interval(*field.range, integer);
+}
+
+/// The table docs/scene-format.md shows for one scope, from the settings' declarations.
+std::string settingsTable(const std::string& scope, const std::vector<SettingField>& fields) {
+  std::string table = "<!-- settings of " + scope + ", generated: see below -->\n" +
+                      "| key | unit | default | range | meaning |\n|---|---|---|---|---|\n";
+  for (const SettingField& field : fields) {
+    table += "| `" + field.name + "` | " + (field.unit.empty() ? "—" : field.unit) + " | `" +
+             defaultValue(field) + "` | " + rangeColumn(field) + " | " + field.meaning + " |\n";
+  }
+  return table + "<!-- end of the settings of " + scope + " -->\n";
+}
+
+/// Each scope's fields at their defaults: the world's, then each solver's.
+std::vector<std::pair<std::string, std::vector<SettingField>>> defaultFields(
+    WorldSettings& world, SolverSettings& solvers) {
+  std::vector<std::pair<std::string, std::vector<SettingField>>> scopes = {
+      {"world", describe(world)}};
+  for (const std::string& solver : sceneSolverNames()) {
+    scopes.emplace_back(solver, solverSettingFields(solvers, solver));
+  }
+  return scopes;
+}
+
 }  // namespace
 
 TEST_CASE("every numeric setting of the world and of each method has a range holding its default",
@@ -74,28 +119,30 @@ TEST_CASE("every numeric setting of the world and of each method has a range hol
   }
 }
 
-TEST_CASE("docs/scene-format.md states the range of every key", "[settings][ranges][docs]") {
-  std::ifstream in(IMPULSE2D_SOURCE_DIR "/docs/scene-format.md");
+// The tables are generated: I2D_WRITE_DOCS=1 tests/setting_ranges_test "[docs]" writes them into
+// docs/scene-format.md, between the marker comments.
+TEST_CASE("docs/scene-format.md's settings tables are the settings' declarations",
+          "[settings][ranges][docs]") {
+  const std::string path = IMPULSE2D_SOURCE_DIR "/docs/scene-format.md";
+  std::ifstream in(path);
   std::ostringstream text;
   text << in.rdbuf();
-  const std::string docs = text.str();
-  SolverSettings solvers;
+  std::string docs = text.str();
+  const std::string original = docs;
   WorldSettings world;
-  std::vector<std::pair<std::string, std::vector<SettingField>>> scopes = {
-      {"world", describe(world)}};
-  for (const std::string& solver : sceneSolverNames()) {
-    scopes.emplace_back(solver, solverSettingFields(solvers, solver));
+  SolverSettings solvers;
+  for (const auto& [scope, fields] : defaultFields(world, solvers)) {
+    const std::string table = settingsTable(scope, fields);
+    const size_t begin = docs.find("<!-- settings of " + scope + ",");
+    const std::string endMarker = "<!-- end of the settings of " + scope + " -->\n";
+    const size_t end = docs.find(endMarker);
+    INFO("docs/scene-format.md should hold:\n" << table);
+    REQUIRE(begin != std::string::npos);
+    REQUIRE(end != std::string::npos);
+    docs.replace(begin, end + endMarker.size() - begin, table);
   }
-  for (const auto& [scope, fields] : scopes) {
-    for (const SettingField& field : fields) {
-      const std::optional<SettingRange> range = findSettingRange(scope, field.name);
-      if (!range) continue;
-      const bool integer = std::holds_alternative<int*>(field.value);
-      const std::string row = "| `" + field.name + "` | " + interval(*range, integer) + " |";
-      INFO(scope << ": " << row);
-      CHECK(docs.find(row) != std::string::npos);
-    }
-  }
+  if (std::getenv("I2D_WRITE_DOCS") && docs != original) std::ofstream(path) << docs;
+  CHECK(docs == original);
 }
 
 TEST_CASE("a setting outside its range is refused where it is written", "[settings][ranges]") {

@@ -16,7 +16,7 @@ TEST_CASE("a box has mass ρwh and moment of inertia m(w²+h²)/12", "[shape][ma
 
 TEST_CASE("a circle has mass ρπr² and moment of inertia mr²/2", "[shape][mass]") {
   const MassProperties disk = computeMass(makeCircle(0.5), 2.0);
-  CHECK(disk.mass == Approx(2.0 * M_PI * 0.25).epsilon(1e-14));
+  CHECK(disk.mass == Approx(2.0 * kPi * 0.25).epsilon(1e-14));
   CHECK(disk.inertia == Approx(0.5 * disk.mass * 0.25).epsilon(1e-14));
 }
 

@@ -15,7 +15,6 @@ using namespace impulse2d;
 namespace {
 
 constexpr double kDt = 1.0 / 60.0;
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDrop = 0.02;        ///< m: the small drop onto the slope
 constexpr double kSettled = 1.0;      ///< s: landing is over by then (a 2 cm fall takes 0.064 s)
 constexpr double kHoldSeconds = 5.0;  ///< s: how long a holding body is watched

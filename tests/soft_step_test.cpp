@@ -16,8 +16,6 @@ using namespace solvers;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// A disk of radius 0.5 and mass 1 whose lowest point is `height` above the ground (negative:
 /// overlapping), moving at `velocity`, under `gravity`. A disk's contact arm lies along the
 /// normal, so its contact's effective mass is the disk's mass.
@@ -165,8 +163,7 @@ TEST_CASE("restitution: a closing contact leaves at e times the closing speed be
     CHECK(std::abs(world->bodies()[1].velocity.y()) < 0.05 * kRestitution * kSpeed);
   }
   SECTION("under the threshold nothing bounces") {
-    scene.bodies[1].velocity.y() =
-        -0.5 * scene.solverSettings.softStep.restitutionVelocityThreshold;
+    scene.bodies[1].velocity.y() = -0.5 * scene.solverSettings.softStep.restitutionThreshold;
     auto world = buildWorld(scene);
     runSteps(*world, stepsIn(2.0));
     CHECK(std::abs(world->bodies()[1].velocity.y()) < 1e-3);

@@ -147,7 +147,6 @@ TEST_CASE("a resting pyramid gains no energy over 10 s", "[comparison][pyramid][
 // spends the impulse that its later substeps do not repeat.
 TEST_CASE("each method reports the impulses it applied: a landing rod's momentum changes by them",
           "[comparison][impulse]") {
-  constexpr double kPi = 3.14159265358979323846;
   for (const std::string& method : kMethods) {
     for (const double degrees : {20.0, 45.0, 70.0}) {
       for (const double restitution : {0.0, 0.5}) {

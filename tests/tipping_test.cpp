@@ -22,7 +22,6 @@ using namespace impulse2d;
 namespace {
 
 constexpr double kDt = 1.0 / 60.0;
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kFriction = 1.0;
 
 struct TippingRun {

@@ -18,7 +18,6 @@ using namespace impulse2d;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kWedgeMass = 1.0;    // kg
 constexpr double kWedgeBase = 3.0;    // m
 constexpr double kDrop = 0.015;       // m above the slope, for the runs that land first

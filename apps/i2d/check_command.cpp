@@ -115,7 +115,7 @@ void printBody(const BodyDef& body) {
   const bool isStatic = body.type == impulse2d::BodyType::Static;
   std::cout << "  " << body.name << ": " << (isStatic ? "static" : "dynamic") << " "
             << describeShape(body.shape) << ", centre of mass " << formatVec2(body.position)
-            << " m, angle " << body.angle * 180.0 / M_PI << " deg";
+            << " m, angle " << body.angle * 180.0 / impulse2d::kPi << " deg";
   if (!isStatic) std::cout << ", density " << body.density << " kg/m^2";
   std::cout << ", friction " << body.friction << ", restitution " << body.restitution << "\n";
 }

@@ -1,22 +1,89 @@
-// The settings fields by their scene-file names.
+// The declaration of every setting: its scene-file name, the field it sets, its unit, its range
+// and its meaning. The scene loader checks values against these ranges, `i2d check` lists these
+// fields, and a test requires docs/scene-format.md's tables to be these rows.
 #include "impulse2d/settings.h"
 
+#include <sstream>
+
+#include "impulse2d/math.h"
+
 namespace impulse2d {
+namespace {
+
+/// The reason given for the upper bound of a count that multiplies the work of a step.
+const std::string kWork = "more would let one run take hours";
+/// The reason given for Lemke's island size: a pivot costs points², a path points³.
+const std::string kCubic = "Lemke's pivots on a larger island would take minutes each step";
+/// A switch or a vector: no range.
+const std::optional<SettingRange> kNone;
+
+std::string formatBound(double value, bool integer) {
+  std::ostringstream text;
+  if (integer) {
+    text << static_cast<long long>(value);
+  } else {
+    text << value;
+  }
+  return text.str();
+}
+
+}  // namespace
+
+SettingRange closed(double lowest, double highest, const std::string& bound) {
+  return {lowest, true, highest, bound};
+}
+
+SettingRange aboveZero(double highest) {
+  return {0.0, false, highest, {}};
+}
+
+bool inSettingRange(double value, const SettingRange& range) {
+  const bool aboveLowest = range.lowestIncluded ? value >= range.lowest : value > range.lowest;
+  return aboveLowest && value <= range.highest;
+}
+
+std::string describeSettingRange(const SettingRange& range, bool integer, double value) {
+  std::string text = std::string("must be ") + (integer ? "an integer " : "") + "in " +
+                     (range.lowestIncluded ? "[" : "(") + formatBound(range.lowest, integer) +
+                     ", " + formatBound(range.highest, integer) + "]";
+  if (value > range.highest && !range.bound.empty()) text += " (" + range.bound + ")";
+  return text;
+}
 
 std::vector<SettingField> describe(WorldSettings& s) {
-  return {{"gravity", &s.gravity},
-          {"dt", &s.dt},
-          {"contact_margin", &s.contactMargin},
-          {"substeps", &s.substeps},
-          {"speculative_contacts", &s.speculativeContacts},
-          {"continuous", &s.continuous},
-          {"refuse_internal_edges", &s.refuseInternalEdges},
-          {"sleeping", &s.sleeping},
-          {"sleep_linear_speed", &s.sleepLinearSpeed},
-          {"sleep_angular_speed", &s.sleepAngularSpeed},
-          {"time_to_sleep", &s.timeToSleep},
-          {"keep_speeding_up_awake", &s.keepSpeedingUpAwake},
-          {"speed_up_share", &s.speedUpShare}};
+  return {
+      {"gravity", &s.gravity, "m/s²", kNone, "acceleration of every dynamic body"},
+      {"dt", &s.dt, "s", closed(1e-6, 1.0), "the fixed time step"},
+      {"contact_margin", &s.contactMargin, "m", closed(0.0, 1.0),
+       "contact points are kept while surfaces are closer than this; keep it above micro's "
+       "`velocity_epsilon` × `dt`, or resting contacts flicker (`contact-generation.md`)"},
+      {"substeps", &s.substeps, "", closed(1, 1000, kWork),
+       "each step runs the whole pipeline this many times with `dt/substeps`"},
+      {"speculative_contacts", &s.speculativeContacts, "", kNone,
+       "find contacts `‖vB − vA‖·dt` early, so a fast small body cannot tunnel "
+       "(`rigid-bodies.md`); soft step has them whatever this says, unless its own "
+       "`speculative_contacts` is false"},
+      {"continuous", &s.continuous, "", kNone,
+       "a body whose substep would carry its core (half its smallest extent) into a static body "
+       "is stopped where it reaches it, so a small fast body cannot tunnel (`rigid-bodies.md`)"},
+      {"refuse_internal_edges", &s.refuseInternalEdges, "", kNone,
+       "refuse contacts on the internal edges of static pieces laid flush, so a body crossing the "
+       "seam of two floor tiles meets one surface (`contact-generation.md`)"},
+      {"sleeping", &s.sleeping, "", kNone,
+       "islands at rest sleep: not integrated, contacts neither recomputed nor solved "
+       "(`sleeping.md`)"},
+      {"sleep_linear_speed", &s.sleepLinearSpeed, "m/s", closed(0.0, 100.0),
+       "a body slower than this (and the angular speed) counts as resting"},
+      {"sleep_angular_speed", &s.sleepAngularSpeed, "rad/s", closed(0.0, 100.0),
+       "the angular speed below which a body counts as resting (2°/s)"},
+      {"time_to_sleep", &s.timeToSleep, "s", closed(0.0, 1e6),
+       "an island sleeps once all its bodies have rested this long"},
+      {"keep_speeding_up_awake", &s.keepSpeedingUpAwake, "", kNone,
+       "a body whose speed grew by `speed_up_share` of the thresholds since its rest began is "
+       "not resting (ours; off: Box2D's rule, which freezes a slowly starting body; "
+       "`sleeping.md`)"},
+      {"speed_up_share", &s.speedUpShare, "", closed(0.0, 1.0),
+       "that share: 1 mm/s and 0.2°/s at the default thresholds"}};
 }
 
 MicroCollisionSettings MicroCollisionSettings::lecture() {
@@ -34,29 +101,53 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
 }
 
 std::vector<SettingField> describe(MicroCollisionSettings& s) {
-  return {{"remove_acceleration_velocity", &s.removeAccelerationVelocity},
-          {"lower_restitution_at_low_speed", &s.lowerRestitutionAtLowSpeed},
-          {"restitution_velocity_limit", &s.restitutionVelocityLimit},
-          {"friction", &s.friction},
-          {"velocity_epsilon", &s.velocityEpsilon},
-          {"position_epsilon", &s.positionEpsilon},
-          {"velocity_iterations_per_contact", &s.velocityIterationsPerContact},
-          {"position_iterations_per_contact", &s.positionIterationsPerContact},
-          {"angular_move_limit", &s.angularMoveLimit},
-          {"singular_matrix_tolerance", &s.singularMatrixTolerance},
-          {"touching_tolerance", &s.touchingTolerance},
-          {"speculative_gaps", &s.speculativeGaps},
-          {"impulse_totals", &s.impulseTotals},
-          {"severity_counts_pushed_points", &s.severityCountsPushedPoints},
-          {"warm_starting", &s.warmStarting},
-          {"pair_impulses", &s.pairImpulses},
-          {"pair_bounces", &s.pairBounces},
-          {"pair_moves", &s.pairMoves},
-          {"pass_cap_while_progressing", &s.passCapWhileProgressing},
-          {"progress_rounds", &s.progressRounds},
-          {"minimum_progress", &s.minimumProgress},
-          {"velocity_iterations_per_contact_limit", &s.velocityIterationsPerContactLimit},
-          {"pair_condition_limit", &s.pairConditionLimit}};
+  return {
+      {"remove_acceleration_velocity", &s.removeAccelerationVelocity, "", kNone,
+       "take the velocity the last update's acceleration built up out of the bounce target"},
+      {"lower_restitution_at_low_speed", &s.lowerRestitutionAtLowSpeed, "", kNone,
+       "no bounce below `restitution_threshold`"},
+      {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
+       "below this closing speed a contact does not bounce (Millington: 0.25)"},
+      {"friction", &s.friction, "", kNone,
+       "friction through the 2×2 contact matrix; off: frictionless normal impulses"},
+      {"velocity_epsilon", &s.velocityEpsilon, "m/s", closed(0.0, 1.0),
+       "velocity resolution stops when no contact needs a larger change"},
+      {"position_epsilon", &s.positionEpsilon, "m", closed(0.0, 1.0),
+       "penetration resolution stops when no contact is deeper than this"},
+      {"velocity_iterations_per_contact", &s.velocityIterationsPerContact, "",
+       closed(0, 10000, kWork), "most impulses per contact point in a step"},
+      {"position_iterations_per_contact", &s.positionIterationsPerContact, "",
+       closed(0, 1000, kWork), "most penetration moves per contact point in a step"},
+      {"angular_move_limit", &s.angularMoveLimit, "", closed(0.0, 10.0),
+       "the share of a move that rotation may take, per metre of contact arm (Millington: 0.2)"},
+      {"singular_matrix_tolerance", &s.singularMatrixTolerance, "", closed(0.0, 1.0),
+       "below this |determinant| the contact matrix is singular (frictionless fallback)"},
+      {"touching_tolerance", &s.touchingTolerance, "m", closed(0.0, 0.1),
+       "a point apart by no more than this counts as touching"},
+      {"speculative_gaps", &s.speculativeGaps, "", kNone,
+       "a gap that would close within the step counts, and may close, no more (ours)"},
+      {"impulse_totals", &s.impulseTotals, "", kNone,
+       "an update's impulses at a point add up to one micro-collision that never pulls (ours)"},
+      {"severity_counts_pushed_points", &s.severityCountsPushedPoints, "", kNone,
+       "worst first also counts a pushed point's overpush and slip (ours)"},
+      {"warm_starting", &s.warmStarting, "", kNone,
+       "each point starts the step from its last totals, by feature id (ours)"},
+      {"pair_impulses", &s.pairImpulses, "", kNone,
+       "a two-point manifold's worst point is resolved with its other point (ours)"},
+      {"pair_bounces", &s.pairBounces, "", kNone,
+       "a two-point manifold whose points both bounce bounces as one (ours)"},
+      {"pair_moves", &s.pairMoves, "", kNone,
+       "a two-point manifold's penetrations are removed by one move (ours)"},
+      {"pass_cap_while_progressing", &s.passCapWhileProgressing, "", kNone,
+       "a step at the impulse cap goes on while it still progresses (ours)"},
+      {"progress_rounds", &s.progressRounds, "", closed(1, 10000),
+       "rounds of one impulse per point over which progress is measured"},
+      {"minimum_progress", &s.minimumProgress, "", closed(0.0, 1.0),
+       "the least fraction the waiting total must fall over those rounds"},
+      {"velocity_iterations_per_contact_limit", &s.velocityIterationsPerContactLimit, "",
+       closed(0, 10000, kWork), "most impulses per contact point when passing the cap"},
+      {"pair_condition_limit", &s.pairConditionLimit, "", closed(1.0, 1e12),
+       "a pair is resolved together only when its matrix is this well conditioned"}};
 }
 
 namespace {
@@ -64,22 +155,27 @@ namespace {
 /// The shared nested structs keep the flat scene-file names they always had.
 void addFields(std::vector<SettingField>& fields, ContactTargetSettings& s) {
   fields.insert(fields.end(),
-                {{"penetration_bias", &s.penetrationBias},
-                 {"bias_factor", &s.biasFactor},
-                 {"allowed_penetration", &s.allowedPenetration},
-                 {"max_bias_velocity", &s.maxBiasVelocity},
-                 {"restitution_velocity_threshold", &s.restitutionVelocityThreshold}});
+                {{"penetration_bias", &s.penetrationBias, "", kNone,
+                  "target a separating velocity that grows with penetration (Baumgarte)"},
+                 {"bias_factor", &s.biasFactor, "", closed(0.0, 1.0),
+                  "fraction of the penetration beyond the slop the bias removes per step"},
+                 {"allowed_penetration", &s.allowedPenetration, "m", closed(0.0, 1.0),
+                  "the slop: penetration the bias and the position pass leave alone"},
+                 {"max_push_velocity", &s.maxPushVelocity, "m/s", closed(0.0, 1000.0),
+                  "cap on the bias velocity"},
+                 {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
+                  "below this closing speed a contact does not bounce"}});
 }
 
 void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
-  fields.insert(fields.end(), {{"position_iterations", &s.iterations},
-                               {"position_correction_factor", &s.correctionFactor},
-                               {"max_position_correction", &s.maxCorrection}});
+  fields.insert(fields.end(),
+                {{"position_iterations", &s.iterations, "", closed(0, 1000, kWork),
+                  "sweeps of the position pass; 0 turns it off"},
+                 {"position_correction_factor", &s.correctionFactor, "", closed(0.0, 1.0),
+                  "fraction of the penetration beyond the slop removed per sweep"},
+                 {"max_position_correction", &s.maxCorrection, "m", closed(0.0, 10.0),
+                  "largest correction at one contact in one sweep"}});
 }
-
-}  // namespace
-
-namespace {
 
 /// m/s. A speed no contact reaches, the top of the settings' range: a cap or threshold that never
 /// acts.
@@ -92,8 +188,8 @@ SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
   settings.velocityIterations = 10;
   settings.convergedImpulseChange = 0.0;
   settings.targets.allowedPenetration = 0.01;
-  settings.targets.maxBiasVelocity = kNoLimit;               // Box2D-Lite caps no bias
-  settings.targets.restitutionVelocityThreshold = kNoLimit;  // and has no bounce
+  settings.targets.maxPushVelocity = kNoLimit;       // Box2D-Lite caps no bias
+  settings.targets.restitutionThreshold = kNoLimit;  // and has no bounce
   settings.positionPass.iterations = 0;
   settings.block.enabled = false;
   settings.blockPositionCorrection = false;
@@ -111,59 +207,103 @@ SequentialImpulseSettings SequentialImpulseSettings::box2d24() {
 }
 
 std::vector<SettingField> describe(SequentialImpulseSettings& s) {
-  std::vector<SettingField> fields = {{"velocity_iterations", &s.velocityIterations},
-                                      {"converged_impulse_change", &s.convergedImpulseChange},
-                                      {"accumulate_impulses", &s.accumulateImpulses},
-                                      {"warm_starting", &s.warmStarting}};
+  std::vector<SettingField> fields = {
+      {"velocity_iterations", &s.velocityIterations, "", closed(0, 10000, kWork),
+       "most sweeps over all contacts per step"},
+      {"converged_impulse_change", &s.convergedImpulseChange, "", closed(0.0, 1000.0),
+       "the sweeps stop once none changed an impulse by more than this share of the largest"},
+      {"accumulate_impulses", &s.accumulateImpulses, "", kNone,
+       "clamp each contact's running total rather than each impulse"},
+      {"warm_starting", &s.warmStarting, "", kNone,
+       "begin each step from the last step's totals, by feature id"}};
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);
-  fields.insert(fields.end(), {{"block_solver", &s.block.enabled},
-                               {"block_condition_limit", &s.block.conditionLimit},
-                               {"block_position_correction", &s.blockPositionCorrection},
-                               {"friction_first", &s.frictionFirst}});
+  fields.insert(fields.end(),
+                {{"block_solver", &s.block.enabled, "", kNone,
+                  "solve a two-point contact's velocities as one block (Box2D 2.4)"},
+                 {"block_condition_limit", &s.block.conditionLimit, "", closed(1.0, 1e12),
+                  "a two-point contact is a block only while k₀₀² < this × det K"},
+                 {"block_position_correction", &s.blockPositionCorrection, "", kNone,
+                  "the position pass corrects a two-point contact's corners together"},
+                 {"friction_first", &s.frictionFirst, "", kNone,
+                  "friction before the normal impulses in each contact's solve (Box2D 2.4)"}});
   return fields;
 }
 
 std::vector<SettingField> describe(ReferenceSolverSettings& s) {
+  ActiveSetSettings& a = s.activeSet;
   std::vector<SettingField> fields = {
-      {"residual_tolerance", &s.residualTolerance},
-      {"max_pivots", &s.lemke.maxPivots},
-      {"max_pivots_per_variable", &s.lemke.maxPivotsPerVariable},
-      {"pivot_tolerance", &s.lemke.pivotTolerance},
-      {"tie_tolerance", &s.lemke.tieTolerance},
-      {"degeneracy_perturbation", &s.degeneracyPerturbation},
-      {"covering_retries", &s.coveringRetries},
-      {"harris_tolerance", &s.lemke.harrisTolerance},
-      {"lemke_island_points", &s.lemkeIslandPoints},
-      {"lemke_fallback_points", &s.lemkeFallbackPoints},
-      {"restitution_in_two_solves", &s.restitutionInTwoSolves},
-      {"guess_sweeps", &s.activeSet.guessSweeps},
-      {"max_guess_sweeps", &s.activeSet.maxGuessSweeps},
-      {"warm_states", &s.activeSet.warmStates},
-      {"keep_factors", &s.activeSet.keepFactors},
-      {"kept_rounds", &s.activeSet.keptRounds},
-      {"kept_tolerance", &s.activeSet.keptTolerance},
-      {"refactor_after_solves", &s.activeSet.refactorAfterSolves},
-      {"diagonal_pivot_threshold", &s.activeSet.diagonalPivotThreshold},
-      {"max_factorizations", &s.activeSet.maxFactorizations},
-      {"block_failures", &s.activeSet.blockFailures},
-      {"backtrack", &s.activeSet.backtrack},
-      {"enter_sliding", &s.activeSet.enterSliding},
-      {"regularization", &s.activeSet.regularization},
-      {"centre_on_guess", &s.activeSet.centreOnGuess},
-      {"refinements", &s.activeSet.refinements},
-      {"refinement_tolerance", &s.activeSet.refinementTolerance},
-      {"flip_tolerance", &s.activeSet.flipTolerance}};
+      {"residual_tolerance", &s.residualTolerance, "", aboveZero(1.0),
+       "required residual of the physical conditions, relative to the step's impulse scale"},
+      {"max_pivots", &s.lemke.maxPivots, "", closed(1, 1000000, kWork),
+       "Lemke gives up after this many pivots"},
+      {"max_pivots_per_variable", &s.lemke.maxPivotsPerVariable, "", closed(1, 100, kWork),
+       "...or after this many per variable, if fewer"},
+      {"pivot_tolerance", &s.lemke.pivotTolerance, "", closed(0.0, 1.0),
+       "a pivot must exceed this share of its column's largest entry"},
+      {"tie_tolerance", &s.lemke.tieTolerance, "", closed(0.0, 1.0),
+       "ratios closer than this count as a tie, broken lexicographically"},
+      {"degeneracy_perturbation", &s.degeneracyPerturbation, "", closed(0.0, 1e-3),
+       "Lemke is retried once with q moved by this much"},
+      {"covering_retries", &s.coveringRetries, "", closed(0, 100, kWork),
+       "further covering vectors Lemke is retried along"},
+      {"harris_tolerance", &s.lemke.harrisTolerance, "", closed(0.0, 1.0),
+       "how far Harris's ratio test may overshoot a basic variable"},
+      {"lemke_island_points", &s.lemkeIslandPoints, "", closed(0, 500, kCubic),
+       "islands of up to this many points are solved by Lemke, larger by the active set"},
+      {"lemke_fallback_points", &s.lemkeFallbackPoints, "", closed(0, 500, kCubic),
+       "an island the active set fails on goes to Lemke if it has at most this many points"},
+      {"restitution_in_two_solves", &s.restitutionInTwoSolves, "", kNone,
+       "an island whose bounce targets have no answer bounces by Poisson's law in two solves"},
+      {"guess_sweeps", &a.guessSweeps, "", closed(0, 10000, kWork),
+       "projected Gauss–Seidel sweeps that guess each point's state"},
+      {"max_guess_sweeps", &a.maxGuessSweeps, "", closed(0, 10000, kWork),
+       "...going on while a sweep still changes a state, up to this many"},
+      {"warm_states", &a.warmStates, "", kNone,
+       "a point solved last step starts in the state it was solved in"},
+      {"keep_factors", &a.keepFactors, "", kNone,
+       "keep the last factors and first try GMRES preconditioned by them"},
+      {"kept_rounds", &a.keptRounds, "", closed(0, 10000, kWork),
+       "GMRES rounds on kept factors before factorizing after all"},
+      {"kept_tolerance", &a.keptTolerance, "", closed(0.0, 1.0),
+       "a solve on kept factors is done below this relative residual"},
+      {"refactor_after_solves", &a.refactorAfterSolves, "", closed(0, 100000),
+       "solves on kept factors after which the next system is factorized afresh"},
+      {"diagonal_pivot_threshold", &a.diagonalPivotThreshold, "", closed(0.0, 1.0),
+       "the factorization pivots on the diagonal while it is this share of its column's largest"},
+      {"max_factorizations", &a.maxFactorizations, "", closed(0, 10000, kWork),
+       "the active set gives up after this many factorizations"},
+      {"block_failures", &a.blockFailures, "", closed(0, 10000),
+       "block flips that do not help before flipping one point at a time (without `backtrack`)"},
+      {"backtrack", &a.backtrack, "", kNone,
+       "a flip that does not help goes back to the best states and flips half as many"},
+      {"enter_sliding", &a.enterSliding, "", kNone,
+       "a separated point the answer closes while it slips starts sliding, not sticking"},
+      {"regularization", &a.regularization, "", closed(0.0, 1.0),
+       "Tikhonov term on each velocity row, relative to its Delassus diagonal"},
+      {"centre_on_guess", &a.centreOnGuess, "", kNone,
+       "the regularization is centred on the guess instead of on zero"},
+      {"refinements", &a.refinements, "", closed(0, 100, kWork),
+       "most corrections that take the regularization's shift out"},
+      {"refinement_tolerance", &a.refinementTolerance, "", closed(0.0, 1.0),
+       "the corrections stop below this relative residual"},
+      {"flip_tolerance", &a.flipTolerance, "", closed(0.0, 1.0),
+       "a condition counts as violated beyond this share of the impulse scale"}};
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);
-  fields.insert(fields.end(), {{"block_position_correction", &s.positionBlock.enabled},
-                               {"block_condition_limit", &s.positionBlock.conditionLimit}});
+  fields.insert(fields.end(),
+                {{"block_position_correction", &s.positionBlock.enabled, "", kNone,
+                  "the position pass corrects a two-point contact's corners together"},
+                 {"block_condition_limit", &s.positionBlock.conditionLimit, "", closed(1.0, 1e12),
+                  "a two-point contact is a block only while k₀₀² < this × det K"}});
   return fields;
 }
 
 std::vector<SettingField> describe(Box2dSettings& s) {
-  return {{"velocity_iterations", &s.velocityIterations},
-          {"position_iterations", &s.positionIterations}};
+  return {{"velocity_iterations", &s.velocityIterations, "", closed(0, 1000, kWork),
+           "Box2D's velocity iterations per step"},
+          {"position_iterations", &s.positionIterations, "", closed(0, 1000, kWork),
+           "Box2D's position iterations per step"}};
 }
 
 SoftStepSettings SoftStepSettings::box2dV3() {
@@ -173,38 +313,60 @@ SoftStepSettings SoftStepSettings::box2dV3() {
   settings.recycleWithinFoundDistance = false;
   settings.recycleInWorldFrame = false;
   settings.renewRoundNormals = false;
-  settings.pairRestitution.enabled = false;
+  settings.restitutionBlock.enabled = false;
   settings.frictionInRestitution = false;
   settings.restitutionOnStepTotals = false;
   return settings;
 }
 
 std::vector<SettingField> describe(SoftStepSettings& s) {
-  return {{"substeps", &s.substeps},
-          {"contact_hertz", &s.contactHertz},
-          {"max_hertz_per_substep_rate", &s.maxHertzPerSubstepRate},
-          {"damping_ratio", &s.dampingRatio},
-          {"static_hertz_factor", &s.staticHertzFactor},
-          {"max_push_velocity", &s.maxPushVelocity},
-          {"soft_contacts", &s.softContacts},
-          {"relax", &s.relax},
-          {"friction_in_relax", &s.frictionInRelax},
-          {"warm_starting", &s.warmStarting},
-          {"speculative_contacts", &s.speculativeContacts},
-          {"contact_recycling", &s.contactRecycling},
-          {"round_surfaces", &s.roundSurfaces},
-          {"speculative_at_touch", &s.speculativeAtTouch},
-          {"recycle_distance", &s.recycleDistance},
-          {"recycle_largest_turn", &s.recycleLargestTurn},
-          {"recycle_within_found_distance", &s.recycleWithinFoundDistance},
-          {"recycle_in_world_frame", &s.recycleInWorldFrame},
-          {"friction_in_restitution", &s.frictionInRestitution},
-          {"restitution_on_step_totals", &s.restitutionOnStepTotals},
-          {"renew_round_normals", &s.renewRoundNormals},
-          {"restitution", &s.restitution},
-          {"restitution_velocity_threshold", &s.restitutionVelocityThreshold},
-          {"pair_restitution", &s.pairRestitution.enabled},
-          {"pair_restitution_condition_limit", &s.pairRestitution.conditionLimit}};
+  return {{"substeps", &s.substeps, "", closed(1, 1000, kWork), "substeps per world step (v3: 4)"},
+          {"contact_hertz", &s.contactHertz, "Hz", aboveZero(1e4),
+           "a contact's stiffness as the frequency it rings at (v3: 30)"},
+          {"max_hertz_per_substep_rate", &s.maxHertzPerSubstepRate, "", aboveZero(1.0),
+           "the stiffness never exceeds this share of the substep rate (v3: 0.25)"},
+          {"damping_ratio", &s.dampingRatio, "", closed(0.0, 1e4),
+           "the contact spring's damping ratio (v3: 10)"},
+          {"static_hertz_factor", &s.staticHertzFactor, "", aboveZero(100.0),
+           "contacts with a static body are this many times stiffer (v3: 2)"},
+          {"max_push_velocity", &s.maxPushVelocity, "m/s", closed(0.0, 1000.0),
+           "the fastest the bias pushes overlapping bodies apart (v3: 3)"},
+          {"soft_contacts", &s.softContacts, "", kNone,
+           "soft constraints from hertz and damping; off: the rigid limit"},
+          {"relax", &s.relax, "", kNone, "a solve without bias after the positions moved (v3)"},
+          {"friction_in_relax", &s.frictionInRelax, "", kNone,
+           "friction in the relax solve only (v3 since 2025); off: in both solves"},
+          {"warm_starting", &s.warmStarting, "", kNone,
+           "each step and substep starts from the last impulses"},
+          {"speculative_contacts", &s.speculativeContacts, "", kNone,
+           "speculative contacts whatever the world says, as v3 always has them"},
+          {"contact_recycling", &s.contactRecycling, "", kNone,
+           "a manifold is kept as found while the bodies move little (v3)"},
+          {"round_surfaces", &s.roundSurfaces, "", kNone,
+           "a circle's contact follows its centre and acts where it will touch (ours)"},
+          {"speculative_at_touch", &s.speculativeAtTouch, "", kNone,
+           "a speculative round contact takes its normal from where the two will touch (ours)"},
+          {"recycle_distance", &s.recycleDistance, "m", closed(0.0, 1.0),
+           "a manifold is found anew once B has moved this far relative to A"},
+          {"recycle_largest_turn", &s.recycleLargestTurn, "rad", closed(0.0, kPi),
+           "...or once either body has turned this far"},
+          {"recycle_within_found_distance", &s.recycleWithinFoundDistance, "", kNone,
+           "a one-point manifold is also found anew past the distance it was found within (ours)"},
+          {"recycle_in_world_frame", &s.recycleInWorldFrame, "", kNone,
+           "the recycle distance is measured in the world's frame (ours)"},
+          {"friction_in_restitution", &s.frictionInRestitution, "", kNone,
+           "one friction solve after a bounce (ours)"},
+          {"restitution_on_step_totals", &s.restitutionOnStepTotals, "", kNone,
+           "a bounce may take back what any substep pushed at its point (ours)"},
+          {"renew_round_normals", &s.renewRoundNormals, "", kNone,
+           "a manifold whose normal runs to a circle's centre is found anew every step (ours)"},
+          {"restitution", &s.restitution, "", kNone, "a restitution pass after the substeps (v3)"},
+          {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
+           "below this closing speed a contact does not bounce (v3: 1)"},
+          {"block_restitution", &s.restitutionBlock.enabled, "", kNone,
+           "a two-point manifold whose points both bounce gets one 2×2 block of impulses (ours)"},
+          {"block_condition_limit", &s.restitutionBlock.conditionLimit, "", closed(1.0, 1e12),
+           "...only while k₀₀² < this × det K"}};
 }
 
 }  // namespace impulse2d

@@ -124,7 +124,7 @@ CentredPolygon makePolygon(const std::vector<Vec2>& vertices) {
 
 MassProperties computeMass(const Shape& shape, double density) {
   if (shape.type == ShapeType::Circle) {
-    const double mass = density * M_PI * shape.radius * shape.radius;
+    const double mass = density * kPi * shape.radius * shape.radius;
     return {mass, 0.5 * mass * shape.radius * shape.radius};
   }
   // Sum of the triangles (origin, a, b); the origin is the centroid.

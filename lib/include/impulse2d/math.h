@@ -12,6 +12,9 @@ namespace impulse2d {
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 
+/// π, the one constant for it (kPi is not standard C++).
+inline constexpr double kPi = 3.14159265358979323846;
+
 /// z component of the 3D cross product (a, 0) × (b, 0): the torque of force b at arm a.
 inline double cross(const Vec2& a, const Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();

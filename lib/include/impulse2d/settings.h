@@ -1,8 +1,11 @@
 // Every tunable number of the engine, gathered: the world's and the shared contact rules
 // (shared_settings.h), each method's own struct beside it (solvers/*_settings.h), and Box2D's
-// iteration counts. A scene file's [world] and [solver] tables set their fields by name.
+// iteration counts. Each struct gives its fields' defaults; describe() declares each field's
+// scene-file name, unit, range and meaning, from which a scene file's [world] and [solver] tables
+// set them, the ranges are checked and docs/scene-format.md's tables are generated.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -18,10 +21,8 @@ namespace impulse2d {
 /// Box2D 2.4 running the same scene (the behaviour reference): its iteration counts.
 struct Box2dSettings {
   /// Box2D's velocity iterations per step (its testbed default).
-  /// Range: [0, 1000] (more would let one run take hours).
   int velocityIterations = 8;
   /// Box2D's position iterations per step (its testbed default).
-  /// Range: [0, 1000] (more would let one run take hours).
   int positionIterations = 3;
 };
 
@@ -40,14 +41,41 @@ struct SolverSettings {
   SoftStepSettings softStep;
 };
 
-/// One named field of a settings struct, for setting it by name from a scene file or the command
-/// line and for listing it in `i2d check`.
+/// The values a setting may take: from lowest to highest, each end included or not.
+struct SettingRange {
+  double lowest = 0.0;         ///< the lower end
+  bool lowestIncluded = true;  ///< [lowest, ...] or (lowest, ...]
+  double highest = 0.0;        ///< the upper end
+  /// Why the upper bound is there, for keys that would make a run unbounded; empty otherwise.
+  std::string bound;
+};
+
+/// The declaration of one setting: its scene-file name, the field it sets, its unit, its range
+/// and its meaning in a line. The field's default is its initializer in the struct. The scene
+/// loader, its range checks, `i2d check`'s listing and the tables of docs/scene-format.md all
+/// read these declarations (describe() below).
 struct SettingField {
   std::string name;  ///< snake_case, as in scene files
   /// the field in the struct
   std::variant<double*, int*, bool*, Vec2*> value;
+  std::string unit;                   ///< SI unit, empty for a count, a ratio or a switch
+  std::optional<SettingRange> range;  ///< every number has one; a switch or a vector has none
+  std::string meaning;                ///< one line, as the docs' tables show it
 };
 
+/// [lowest, highest], with the reason for the upper bound if it keeps a run from taking hours.
+SettingRange closed(double lowest, double highest, const std::string& bound = {});
+/// (0, highest].
+SettingRange aboveZero(double highest);
+
+/// Whether `value` lies in `range`.
+bool inSettingRange(double value, const SettingRange& range);
+
+/// "must be an integer in [1, 1000]" or "must be in (0, 1]", with the bound's reason when the
+/// value is above it.
+std::string describeSettingRange(const SettingRange& range, bool integer, double value);
+
+/// The declarations of each settings struct's fields, in the order `i2d check` lists them.
 std::vector<SettingField> describe(WorldSettings& settings);
 std::vector<SettingField> describe(MicroCollisionSettings& settings);
 std::vector<SettingField> describe(SequentialImpulseSettings& settings);

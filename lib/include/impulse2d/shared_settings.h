@@ -12,16 +12,13 @@ struct WorldSettings {
   /// m/s^2. Earth's gravity, downwards.
   Vec2 gravity = Vec2(0.0, -9.81);
   /// s. The fixed time step: 60 updates a second, as most games run.
-  /// Range: [1e-06, 1].
   double dt = 1.0 / 60.0;
   /// m. Contact points are generated while the surfaces are closer than this, so a resting body
   /// whose correction left a hair's gap keeps its contact. Solvers treat a gap as speculative:
   /// they only act if the gap would close within the step.
-  /// Range: [0, 1].
   double contactMargin = 0.005;
   /// Each step runs the whole pipeline this many times with dt/substeps: a cure for a time step
   /// too large for the scene (deep overlaps, soft stacks) that keeps the step the caller sees.
-  /// Range: [1, 1000] (more would let one run take hours).
   int substeps = 1;
   /// Fast bodies find their contacts one step early: the broad phase fattens each body's bounds
   /// by |v|·dt and a pair keeps contact points while the gap is under contactMargin + |vB−vA|·dt,
@@ -41,14 +38,11 @@ struct WorldSettings {
   bool sleeping = false;
   /// m/s. A body slower than this (and sleepAngularSpeed) counts as resting. Box2D's 0.01: a
   /// hundredth of a body width of 1 m per second is invisible at 60 frames a second.
-  /// Range: [0, 100].
   double sleepLinearSpeed = 0.01;
   /// rad/s. The angular speed below which a body counts as resting: Box2D's 2 degrees a second.
-  /// Range: [0, 100].
-  double sleepAngularSpeed = 2.0 * 3.14159265358979323846 / 180.0;
+  double sleepAngularSpeed = 2.0 * kPi / 180.0;
   /// s. An island sleeps once every body in it has rested this long (Box2D's half a second:
   /// long enough that a body at the top of a bounce or a swing is not frozen).
-  /// Range: [0, 1e+06].
   double timeToSleep = 0.5;
   /// Keep a body that is speeding up awake, ours beyond Box2D: a body counts as resting only while
   /// its speed and spin have grown by less than speedUpShare of the thresholds above since its
@@ -62,7 +56,6 @@ struct WorldSettings {
   /// The share of sleepLinearSpeed (sleepAngularSpeed) by which a resting body's speed (spin) may
   /// grow before it counts as speeding up: 1 mm/s and 0.2°/s. A settled pile's bodies jitter up
   /// by at most half of that (4.7e-4 m/s measured on a 10-box stack under micro).
-  /// Range: [0, 1].
   double speedUpShare = 0.1;
 };
 
@@ -73,18 +66,14 @@ struct ContactTargetSettings {
   /// Target a small separating velocity that grows with penetration (Baumgarte bias).
   bool penetrationBias = true;
   /// Fraction of the penetration beyond the slop removed per step by the bias velocity.
-  /// Range: [0, 1].
   double biasFactor = 0.2;
   /// m. The slop: penetration the bias and the position pass leave alone, so resting contacts
   /// stay touching. Its one home for each solver.
-  /// Range: [0, 1].
   double allowedPenetration = 0.005;
   /// m/s. Cap on the bias velocity, so deep overlaps separate without an explosion.
-  /// Range: [0, 1000].
-  double maxBiasVelocity = 4.0;
+  double maxPushVelocity = 4.0;
   /// m/s. Below this closing speed a contact does not bounce (Box2D 2.4: 1 m/s).
-  /// Range: [0, 1000].
-  double restitutionVelocityThreshold = 1.0;
+  double restitutionThreshold = 1.0;
 };
 
 /// The rules above with penetration bias off: the reference's default.
@@ -98,13 +87,10 @@ inline ContactTargetSettings unbiasedTargets() {
 /// the slop of the solver's ContactTargetSettings alone.
 struct PositionPassSettings {
   /// Sweeps of the position pass; 0 turns it off.
-  /// Range: [0, 1000] (more would let one run take hours).
   int iterations = 3;
   /// Fraction of the remaining penetration beyond the slop removed per sweep.
-  /// Range: [0, 1].
   double correctionFactor = 0.2;
   /// m. Largest correction at one contact in one sweep.
-  /// Range: [0, 10].
   double maxCorrection = 0.2;
 };
 
@@ -114,7 +100,6 @@ struct BlockSolveSettings {
   /// does; the corner visited first then always gets more, and a tall stack leans and sways.
   bool enabled = true;
   /// A two-point contact is solved as a block only while k₀₀² < this × det K (Box2D's 1000).
-  /// Range: [1, 1e+12].
   double conditionLimit = 1000.0;
 };
 

@@ -158,7 +158,7 @@ Box2dSimulation::Box2dSimulation(const Scene& scene, const Box2dOptions& options
   world_->world.SetAllowSleeping(options.allowSleeping);
   world_->world.SetContinuousPhysics(options.continuousPhysics);
   const float restitutionThreshold =
-      float(scene.solverSettings.sequential.targets.restitutionVelocityThreshold);
+      float(scene.solverSettings.sequential.targets.restitutionThreshold);
   for (size_t i = 0; i < scene.bodies.size(); ++i) {
     const BodyDef& def = scene.bodies[i];
     b2BodyDef bodyDef;

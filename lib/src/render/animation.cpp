@@ -110,13 +110,13 @@ std::vector<Color> gifPalette() {
   return palette;
 }
 
-int nearestPaletteIndex(const std::vector<Color>& palette, Color color) {
+int nearestPaletteIndex(const std::vector<Color>& palette, Color colour) {
   int best = 0;
   int bestDistance = 1 << 30;
   for (int i = 0; i < int(palette.size()); ++i) {
-    const int dr = int(palette[i].r) - color.r;
-    const int dg = int(palette[i].g) - color.g;
-    const int db = int(palette[i].b) - color.b;
+    const int dr = int(palette[i].r) - colour.r;
+    const int dg = int(palette[i].g) - colour.g;
+    const int db = int(palette[i].b) - colour.b;
     const int distance = dr * dr + dg * dg + db * db;
     if (distance < bestDistance) {
       best = i;

@@ -131,7 +131,7 @@ class CairoCanvas : public Canvas {
       if (outline.radius > 0.0) {
         cairo_new_sub_path(cairo_);
         cairo_arc(cairo_, outline.points[0].x(), outline.points[0].y(), outline.radius, 0.0,
-                  2.0 * M_PI);
+                  2.0 * kPi);
         continue;
       }
       cairo_move_to(cairo_, outline.points[0].x(), outline.points[0].y());

@@ -486,7 +486,7 @@ std::vector<Manifold> startingContacts(const std::vector<Body>& bodies, double m
 }
 
 double drawWorldArrow(Drawing& drawing, const Camera& camera, const Vec2& at, const Vec2& vector,
-                      Color color, const RenderSettings& settings, const Vec2& shift, bool halo) {
+                      Color colour, const RenderSettings& settings, const Vec2& shift, bool halo) {
   Vec2 pixels = camera.toPixelVector(vector);
   const double length = pixels.norm();
   if (!(length >= settings.minArrowLength)) return 0.0;
@@ -494,7 +494,7 @@ double drawWorldArrow(Drawing& drawing, const Camera& camera, const Vec2& at, co
   if (length > longest) pixels *= longest / length;
   const ArrowSize size = arrowSize(camera, settings);
   const Vec2 from = camera.toPixels(at) + shift;
-  drawing.arrow(from, from + pixels, size.width, size.headLength, size.headWidth, color,
+  drawing.arrow(from, from + pixels, size.width, size.headLength, size.headWidth, colour,
                 halo ? settings.colours.arrowHalo : Color{0, 0, 0, 0});
   return std::min(length, longest);
 }

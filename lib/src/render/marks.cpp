@@ -108,7 +108,7 @@ Outline circleOutline(const Vec2& centre, double radius) {
   Outline dot;
   dot.points.push_back(Vec2(centre.x() + radius, centre.y()));
   for (int k = 1; k < kSmallCircleSides; ++k) {
-    const double angle = 2.0 * M_PI * k / kSmallCircleSides;
+    const double angle = 2.0 * kPi * k / kSmallCircleSides;
     dot.points.push_back(
         Vec2(centre.x() + radius * std::cos(angle), centre.y() + radius * std::sin(angle)));
   }
@@ -125,9 +125,9 @@ Mark placing(Mark::Kind kind, const Vec2& at = Vec2::Zero()) {
 
 }  // namespace
 
-Color withOpacity(Color color, double opacity) {
-  color.a = std::uint8_t(std::lround(color.a * std::clamp(opacity, 0.0, 1.0)));
-  return color;
+Color withOpacity(Color colour, double opacity) {
+  colour.a = std::uint8_t(std::lround(colour.a * std::clamp(opacity, 0.0, 1.0)));
+  return colour;
 }
 
 double lineHeight(double size) {

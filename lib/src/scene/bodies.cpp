@@ -18,7 +18,7 @@ namespace {
 constexpr int kMaxGeneratedBoxes = 100000;
 
 double radians(double degrees) {
-  return degrees * M_PI / 180.0;
+  return degrees * kPi / 180.0;
 }
 
 /// Density, friction and restitution: the keys bodies and generators share.

@@ -51,6 +51,17 @@ struct RetiredKey {
 };
 
 constexpr RetiredKey kRetiredKeys[] = {
+    {"micro", "restitution_velocity_limit", "is now 'restitution_threshold', Box2D's word"},
+    {"sequential", "restitution_velocity_threshold",
+     "is now 'restitution_threshold', Box2D's word"},
+    {"reference", "restitution_velocity_threshold", "is now 'restitution_threshold', Box2D's word"},
+    {"soft_step", "restitution_velocity_threshold", "is now 'restitution_threshold', Box2D's word"},
+    {"sequential", "max_bias_velocity", "is now 'max_push_velocity', Box2D's word"},
+    {"reference", "max_bias_velocity", "is now 'max_push_velocity', Box2D's word"},
+    {"soft_step", "pair_restitution",
+     "is now 'block_restitution': a two-point contact solved together is a block"},
+    {"soft_step", "pair_restitution_condition_limit",
+     "is now 'block_condition_limit', as in the other methods"},
     {"micro", "warm_start", "is now 'warm_starting', its name in every method"},
     {"soft_step", "recycle_round_normals",
      "is now 'renew_round_normals', with its meaning turned so that true turns the idea on: "
@@ -80,9 +91,9 @@ void rejectRetiredKeys(const toml::table& solver, const std::string& solverName)
 void readWorld(const toml::table& root, Scene& scene) {
   const toml::table* world = findTable(root, "world");
   if (!world) return;
-  readSettingsTable(*world, describe(scene.world), {"steps", "solver"}, "[world]", "world");
+  readSettingsTable(*world, describe(scene.world), {"steps", "solver"}, "[world]");
   if (const toml::node* steps = world->get("steps")) {
-    scene.steps = readSettingInteger(*steps, "steps", "world");
+    scene.steps = readSettingInteger(*steps, "steps", findSettingRange("world", "steps"));
   }
   readSolverName(*world, scene);
 }
@@ -93,7 +104,7 @@ void readSolver(const toml::table& root, Scene& scene) {
   rejectRetiredKeys(*solver, scene.solver);
   readPreset(*solver, scene);
   readSettingsTable(*solver, solverSettingFields(scene.solverSettings, scene.solver), {"preset"},
-                    "[solver] for solver '" + scene.solver + "'", scene.solver);
+                    "[solver] for solver '" + scene.solver + "'");
 }
 
 namespace {
@@ -159,111 +170,8 @@ void checkFollowedBody(const toml::table& root, const SceneFile& scene) {
 namespace impulse2d {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-/// The reason given for the upper bound of a count that multiplies the work of a step.
-const std::string kWork = "more would let one run take hours";
-/// The reason given for Lemke's island size: a pivot costs points², a path points³.
-const std::string kCubic = "Lemke's pivots on a larger island would take minutes each step";
-
-struct RangeEntry {
-  const char* scope;  ///< "world", a solver's name, or "rigid" for sequential and reference
-  const char* key;
-  SettingRange range;
-};
-
-SettingRange closed(double lowest, double highest, const std::string& bound = {}) {
-  return {lowest, true, highest, bound};
-}
-
-SettingRange aboveZero(double highest, const std::string& bound = {}) {
-  return {0.0, false, highest, bound};
-}
-
-/// Every numeric setting's range (docs/scene-format.md lists the same).
-const std::vector<RangeEntry>& rangeTable() {
-  static const std::vector<RangeEntry> table = {
-      {"world", "dt", closed(1e-6, 1.0)},
-      {"world", "contact_margin", closed(0.0, 1.0)},
-      {"world", "substeps", closed(1, 1000, kWork)},
-      {"world", "sleep_linear_speed", closed(0.0, 100.0)},
-      {"world", "sleep_angular_speed", closed(0.0, 100.0)},
-      {"world", "time_to_sleep", closed(0.0, 1e6)},
-      {"world", "speed_up_share", closed(0.0, 1.0)},
-      {"world", "steps", closed(0, 10000000, kWork)},
-      {"micro", "restitution_velocity_limit", closed(0.0, 1000.0)},
-      {"micro", "velocity_epsilon", closed(0.0, 1.0)},
-      {"micro", "position_epsilon", closed(0.0, 1.0)},
-      {"micro", "velocity_iterations_per_contact", closed(0, 10000, kWork)},
-      {"micro", "position_iterations_per_contact", closed(0, 1000, kWork)},
-      {"micro", "angular_move_limit", closed(0.0, 10.0)},
-      {"micro", "singular_matrix_tolerance", closed(0.0, 1.0)},
-      {"micro", "touching_tolerance", closed(0.0, 0.1)},
-      {"micro", "progress_rounds", closed(1, 10000)},
-      {"micro", "minimum_progress", closed(0.0, 1.0)},
-      {"micro", "velocity_iterations_per_contact_limit", closed(0, 10000, kWork)},
-      {"micro", "pair_condition_limit", closed(1.0, 1e12)},
-      {"sequential", "velocity_iterations", closed(0, 10000, kWork)},
-      {"sequential", "converged_impulse_change", closed(0.0, 1000.0)},
-      {"rigid", "bias_factor", closed(0.0, 1.0)},
-      {"rigid", "allowed_penetration", closed(0.0, 1.0)},
-      {"rigid", "max_bias_velocity", closed(0.0, 1000.0)},
-      {"rigid", "restitution_velocity_threshold", closed(0.0, 1000.0)},
-      {"rigid", "position_iterations", closed(0, 1000, kWork)},
-      {"rigid", "position_correction_factor", closed(0.0, 1.0)},
-      {"rigid", "max_position_correction", closed(0.0, 10.0)},
-      {"rigid", "block_condition_limit", closed(1.0, 1e12)},
-      {"reference", "residual_tolerance", aboveZero(1.0)},
-      {"reference", "max_pivots", closed(1, 1000000, kWork)},
-      {"reference", "max_pivots_per_variable", closed(1, 100, kWork)},
-      {"reference", "pivot_tolerance", closed(0.0, 1.0)},
-      {"reference", "tie_tolerance", closed(0.0, 1.0)},
-      {"reference", "degeneracy_perturbation", closed(0.0, 1e-3)},
-      {"reference", "covering_retries", closed(0, 100, kWork)},
-      {"reference", "harris_tolerance", closed(0.0, 1.0)},
-      {"reference", "lemke_island_points", closed(0, 500, kCubic)},
-      {"reference", "lemke_fallback_points", closed(0, 500, kCubic)},
-      {"reference", "guess_sweeps", closed(0, 10000, kWork)},
-      {"reference", "max_guess_sweeps", closed(0, 10000, kWork)},
-      {"reference", "kept_rounds", closed(0, 10000, kWork)},
-      {"reference", "kept_tolerance", closed(0.0, 1.0)},
-      {"reference", "refactor_after_solves", closed(0, 100000)},
-      {"reference", "diagonal_pivot_threshold", closed(0.0, 1.0)},
-      {"reference", "max_factorizations", closed(0, 10000, kWork)},
-      {"reference", "block_failures", closed(0, 10000)},
-      {"reference", "regularization", closed(0.0, 1.0)},
-      {"reference", "refinements", closed(0, 100, kWork)},
-      {"reference", "refinement_tolerance", closed(0.0, 1.0)},
-      {"reference", "flip_tolerance", closed(0.0, 1.0)},
-      {"box2d", "velocity_iterations", closed(0, 1000, kWork)},
-      {"box2d", "position_iterations", closed(0, 1000, kWork)},
-      {"soft_step", "substeps", closed(1, 1000, kWork)},
-      {"soft_step", "contact_hertz", aboveZero(1e4)},
-      {"soft_step", "max_hertz_per_substep_rate", aboveZero(1.0)},
-      {"soft_step", "damping_ratio", closed(0.0, 1e4)},
-      {"soft_step", "static_hertz_factor", aboveZero(100.0)},
-      {"soft_step", "max_push_velocity", closed(0.0, 1000.0)},
-      {"soft_step", "recycle_distance", closed(0.0, 1.0)},
-      {"soft_step", "recycle_largest_turn", closed(0.0, kPi)},
-      {"soft_step", "restitution_velocity_threshold", closed(0.0, 1000.0)},
-      {"soft_step", "pair_restitution_condition_limit", closed(1.0, 1e12)},
-  };
-  return table;
-}
-
-bool inScope(const std::string& entryScope, const std::string& scope) {
-  return entryScope == scope ||
-         (entryScope == "rigid" && (scope == "sequential" || scope == "reference"));
-}
-
-std::string formatBound(double value, bool integer) {
-  std::ostringstream text;
-  if (integer) {
-    text << static_cast<long long>(value);
-  } else {
-    text << value;
-  }
-  return text.str();
-}
+/// `steps`, the one [world] key that is the scene's rather than WorldSettings'.
+const SettingRange kStepsRange = closed(0, 10000000, "more would let one run take hours");
 
 }  // namespace
 
@@ -288,23 +196,15 @@ std::string checkFramePixels(int width, int height, int panels) {
 }
 
 std::optional<SettingRange> findSettingRange(const std::string& scope, const std::string& key) {
-  for (const RangeEntry& entry : rangeTable()) {
-    if (entry.key == key && inScope(entry.scope, scope)) return entry.range;
+  if (scope == "world" && key == "steps") return kStepsRange;
+  WorldSettings world;
+  SolverSettings solvers;
+  const std::vector<SettingField> fields =
+      scope == "world" ? describe(world) : solverSettingFields(solvers, scope);
+  for (const SettingField& field : fields) {
+    if (field.name == key) return field.range;
   }
   return std::nullopt;
-}
-
-bool inSettingRange(double value, const SettingRange& range) {
-  const bool aboveLowest = range.lowestIncluded ? value >= range.lowest : value > range.lowest;
-  return aboveLowest && value <= range.highest;
-}
-
-std::string describeSettingRange(const SettingRange& range, bool integer, double value) {
-  std::string text = std::string("must be ") + (integer ? "an integer " : "") + "in " +
-                     (range.lowestIncluded ? "[" : "(") + formatBound(range.lowest, integer) +
-                     ", " + formatBound(range.highest, integer) + "]";
-  if (value > range.highest && !range.bound.empty()) text += " (" + range.bound + ")";
-  return text;
 }
 
 }  // namespace impulse2d

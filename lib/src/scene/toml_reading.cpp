@@ -73,8 +73,8 @@ std::string describeRange(Range range) {
        std::string(key) + " = " + value + ": " + describeSettingRange(range, integer, number));
 }
 
-double readSettingNumber(const toml::node& node, std::string_view key, const std::string& scope) {
-  const std::optional<SettingRange> range = findSettingRange(scope, std::string(key));
+double readSettingNumber(const toml::node& node, std::string_view key,
+                         const std::optional<SettingRange>& range) {
   const double value = readNumber(node, key, range ? Range::Any : Range::NonNegative);
   if (range && !inSettingRange(value, *range)) {
     failRange(node, key, formatNumber(value), *range, false, value);
@@ -82,15 +82,15 @@ double readSettingNumber(const toml::node& node, std::string_view key, const std
   return value;
 }
 
-void readSetting(const SettingField& field, const toml::node& node, const std::string& scope) {
+void readSetting(const SettingField& field, const toml::node& node) {
   std::visit(
       [&](auto* target) {
         using Target = std::remove_pointer_t<decltype(target)>;
         if constexpr (std::is_same_v<Target, double>) {
-          *target = readSettingNumber(node, field.name, scope);
+          *target = readSettingNumber(node, field.name, field.range);
         }
         if constexpr (std::is_same_v<Target, int>) {
-          *target = readSettingInteger(node, field.name, scope);
+          *target = readSettingInteger(node, field.name, field.range);
         }
         if constexpr (std::is_same_v<Target, bool>) *target = readBoolean(node, field.name);
         if constexpr (std::is_same_v<Target, Vec2>) *target = readVec2(node, field.name);
@@ -223,8 +223,8 @@ void readOptional(const toml::table& table, std::string_view key, std::string& t
   if (const toml::node* node = table.get(key)) target = readString(*node, key);
 }
 
-int readSettingInteger(const toml::node& node, std::string_view key, const std::string& scope) {
-  const std::optional<SettingRange> range = findSettingRange(scope, std::string(key));
+int readSettingInteger(const toml::node& node, std::string_view key,
+                       const std::optional<SettingRange>& range) {
   if (!range) return readInteger(node, key, 0);
   if (!node.is_integer()) failType(node, key, "an integer");
   const int64_t value = *node.value<int64_t>();
@@ -235,14 +235,13 @@ int readSettingInteger(const toml::node& node, std::string_view key, const std::
 }
 
 void readSettingsTable(const toml::table& table, const std::vector<SettingField>& fields,
-                       const std::vector<std::string>& otherKeys, const std::string& tableName,
-                       const std::string& scope) {
+                       const std::vector<std::string>& otherKeys, const std::string& tableName) {
   std::vector<std::string> known;
   for (const SettingField& field : fields) known.push_back(field.name);
   known.insert(known.end(), otherKeys.begin(), otherKeys.end());
   rejectUnknownKeys(table, known, tableName);
   for (const SettingField& field : fields) {
-    if (const toml::node* node = table.get(field.name)) readSetting(field, *node, scope);
+    if (const toml::node* node = table.get(field.name)) readSetting(field, *node);
   }
 }
 

@@ -51,15 +51,15 @@ void readOptional(const toml::table& table, std::string_view key, Vec2& target,
                   Range range = Range::Any);
 void readOptional(const toml::table& table, std::string_view key, std::string& target);
 
-/// Sets each settings field the table names, each number finite and in the field's range in
-/// setting_ranges.h for `scope` ("world" or the solver's name); keys not in `fields` must be in
-/// `otherKeys`. Out of range: "key = value: must be in [a, b]", located at the value.
+/// Sets each settings field the table names, each number finite and in the range its declaration
+/// gives; keys not in `fields` must be in `otherKeys`. Out of range: "key = value: must be in
+/// [a, b]", located at the value.
 void readSettingsTable(const toml::table& table, const std::vector<SettingField>& fields,
-                       const std::vector<std::string>& otherKeys, const std::string& tableName,
-                       const std::string& scope);
+                       const std::vector<std::string>& otherKeys, const std::string& tableName);
 
-/// An integer setting such as the scene's steps, in its range for `scope`.
-int readSettingInteger(const toml::node& node, std::string_view key, const std::string& scope);
+/// An integer setting such as the scene's steps, in `range` (any integer ≥ 0 without one).
+int readSettingInteger(const toml::node& node, std::string_view key,
+                       const std::optional<SettingRange>& range);
 
 /// "a, b, c": the names in a message listing what is known.
 std::string joinNames(const std::vector<std::string>& names);

@@ -38,11 +38,11 @@ double targetSeparatingVelocity(double normalVelocityBefore, double penetration,
     target = penetration / dt;
   } else if (rules.penetrationBias) {
     const double excess = std::max(penetration - rules.allowedPenetration, 0.0);
-    target = std::min(rules.biasFactor * excess / dt, rules.maxBiasVelocity);
+    target = std::min(rules.biasFactor * excess / dt, rules.maxPushVelocity);
   }
   const bool closesThisStep = normalVelocityBefore * dt < penetration;
-  const bool bounces = restitution > 0.0 && closesThisStep &&
-                       normalVelocityBefore < -rules.restitutionVelocityThreshold;
+  const bool bounces =
+      restitution > 0.0 && closesThisStep && normalVelocityBefore < -rules.restitutionThreshold;
   if (bounces) target = std::max(target, -restitution * normalVelocityBefore);
   return target;
 }

@@ -46,7 +46,7 @@ ReferenceSolverSettings referenceSettingsFor(const std::string& method,
   if (method == "sequential") reference.targets = settings.sequential.targets;
   if (method == "micro") {
     reference.targets.penetrationBias = false;
-    reference.targets.restitutionVelocityThreshold = settings.micro.restitutionVelocityLimit;
+    reference.targets.restitutionThreshold = settings.micro.restitutionThreshold;
   }
   return reference;
 }

@@ -278,7 +278,7 @@ void MicroCollisionSolver::indexContactsByBody(const StepContext& context) {
 // Lowering the restitution: a contact closing slower than the velocity limit does not bounce.
 double MicroCollisionSolver::appliedRestitution(const PointState& state,
                                                 double closingSpeed) const {
-  if (settings_.lowerRestitutionAtLowSpeed && closingSpeed < settings_.restitutionVelocityLimit) {
+  if (settings_.lowerRestitutionAtLowSpeed && closingSpeed < settings_.restitutionThreshold) {
     return 0.0;
   }
   return state.restitution;

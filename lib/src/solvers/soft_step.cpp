@@ -14,8 +14,6 @@
 namespace impulse2d {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// How far along the normal a contact found `separation` apart moves from the middle of the gap
 /// to where the surfaces will touch, when one or both are circles (roundSurfaces): a circle
 /// touches a polygon at its own surface, and two circles where the line of centres divides as
@@ -462,12 +460,11 @@ void SoftStepSolver::integratePositions(double h) {
 // Whether a point bounces: it was closing faster than the threshold before the step and was
 // touched in it.
 bool SoftStepSolver::bounces(const ConstraintPoint& cp) const {
-  return cp.relativeVelocity <= -settings_.restitutionVelocityThreshold &&
-         cp.totalNormalImpulse != 0.0;
+  return cp.relativeVelocity <= -settings_.restitutionThreshold && cp.totalNormalImpulse != 0.0;
 }
 
 // A contact that bounces is made to separate at −e times its closing speed before the step: a
-// two-point manifold whose points both bounce as one block (pairRestitution), otherwise point by
+// two-point manifold whose points both bounce as one block (restitutionBlock), otherwise point by
 // point as Box2D v3 does. With frictionInRestitution its friction is then solved once more, now
 // bounded with the bounce's impulse in the normal one, and the bounce again, since at a corner,
 // or at a face's two corners carrying unequal loads, friction also changes the normal velocities.
@@ -557,13 +554,13 @@ void SoftStepSolver::setBounceImpulse(const Constraint& constraint, ConstraintPo
 // as one: the switch is off, a point does not bounce, or K is too ill-conditioned.
 bool SoftStepSolver::applyPairRestitution(Constraint& constraint, SubstepBody& a,
                                           SubstepBody& b) const {
-  if (!settings_.pairRestitution.enabled || constraint.pointCount != 2) return false;
+  if (!settings_.restitutionBlock.enabled || constraint.pointCount != 2) return false;
   ConstraintPoint& p0 = constraint.points[0];
   ConstraintPoint& p1 = constraint.points[1];
   if (!bounces(p0) || !bounces(p1)) return false;
   const Vec2& n = constraint.normal;
   const Mat2 k = normalCouplingMatrix(a, b, n, {p0.armA, p1.armA}, {p0.armB, p1.armB});
-  if (!isWellConditioned(k, settings_.pairRestitution.conditionLimit)) return false;
+  if (!isWellConditioned(k, settings_.restitutionBlock.conditionLimit)) return false;
   const Vec2 before(bounceBase(p0), bounceBase(p1));
   Vec2 missing;  // vn − target at each point now
   for (int i = 0; i < 2; ++i) {

@@ -21,7 +21,7 @@ struct AgreementSettings {
   /// m/s. A body moving slower than this is at rest: Box2D's linear sleep tolerance.
   double restLinearSpeed = 0.01;
   /// rad/s. A body turning slower than this is at rest: Box2D's angular sleep tolerance (2°/s).
-  double restAngularSpeed = 2.0 * M_PI / 180.0;
+  double restAngularSpeed = 2.0 * kPi / 180.0;
   /// m/s. A body that fell faster than this and then rises faster than this has bounced; slower
   /// motion is the jitter of a resting contact, not a bounce.
   double bounceSpeed = 0.1;

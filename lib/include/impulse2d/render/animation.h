@@ -12,8 +12,8 @@ namespace impulse2d::render {
 
 /// The GIF palette: 6 levels of red, 7 of green, 6 of blue (252 colours) and 4 greys.
 std::vector<Color> gifPalette();
-/// Index of the palette colour nearest `color` (squared RGB distance).
-int nearestPaletteIndex(const std::vector<Color>& palette, Color color);
+/// Index of the palette colour nearest `colour` (squared RGB distance).
+int nearestPaletteIndex(const std::vector<Color>& palette, Color colour);
 
 /// Writes directory()/PREFIX.gif from the writer's frames (rasterised from their pictures), each
 /// shown 1 / framesPerSecond s (GIF counts in hundredths, at least 2), looping forever. Returns its

@@ -122,8 +122,8 @@ DrawnKinds drawScene(Drawing& drawing, const Camera& camera, const std::vector<B
 /// which stand beside the bodies' edges and are many, go without). Returns the arrow's pixel
 /// length (0: not drawn).
 double drawWorldArrow(Drawing& drawing, const Camera& camera, const Vec2& at, const Vec2& vector,
-                      Color color, const RenderSettings& settings, const Vec2& shift = Vec2::Zero(),
-                      bool halo = true);
+                      Color colour, const RenderSettings& settings,
+                      const Vec2& shift = Vec2::Zero(), bool halo = true);
 
 /// Draws a frame's scene again through another camera (a sheet's cell, with its own text size),
 /// its background included; returns what it drew.

@@ -25,7 +25,7 @@ struct Color {
 static_assert(sizeof(Color) == 4, "an image's pixels are packed RGBA bytes, as PNG stores them");
 
 /// The same colour with alpha multiplied by `opacity` in [0, 1].
-Color withOpacity(Color color, double opacity);
+Color withOpacity(Color colour, double opacity);
 
 /// Pixels of one colour each, width × height of them.
 class Image {

@@ -10,39 +10,34 @@ struct MicroCollisionSettings {
   /// Remove the velocity built up by the last update's acceleration from the bounce target:
   /// Δv = −vs − c·(vs − vacc). Off: a resting contact bounces on gravity's velocity (jitter).
   bool removeAccelerationVelocity = true;
-  /// Use zero restitution when the closing speed is under restitutionVelocityLimit.
+  /// Use zero restitution when the closing speed is under restitutionThreshold.
   bool lowerRestitutionAtLowSpeed = true;
   /// m/s. Below this closing speed a contact does not bounce. Millington uses 0.25.
-  /// Range: [0, 1000].
-  double restitutionVelocityLimit = 0.25;
+  double restitutionThreshold = 0.25;
   /// Friction as impulses through the 2×2 contact matrix. Off: frictionless normal impulses.
   bool friction = true;
   /// m/s. Velocity resolution stops when no contact needs a larger velocity change; a bounce
   /// smaller than this is none (the point is not marked as bounced).
-  /// Range: [0, 1].
   double velocityEpsilon = 1e-4;
   /// m. Penetration resolution stops when no contact penetrates deeper than this: resting bodies
   /// settle at up to this overlap. With pair moves 1e-4 keeps a stack straight at half the cost
   /// of 1e-5 (the lecture preset, one corner at a time, needs 1e-5; Millington's engine uses
-  /// 0.01; docs/micro-collisions.md). Range: [0, 1].
+  /// 0.01; docs/micro-collisions.md).
   double positionEpsilon = 1e-4;
   /// Velocity resolution may apply at most this many impulses per contact point in a step: a
   /// stack passes weight down one contact at a time, and a 10-box stack needs about 200 to hold
-  /// still (docs/micro-collisions.md). Range: [0, 10000] (more would let one run take hours).
+  /// still (docs/micro-collisions.md).
   int velocityIterationsPerContact = 200;
   /// Penetration resolution may resolve at most this many times per contact point in a step.
-  /// Range: [0, 1000] (more would let one run take hours).
   int positionIterationsPerContact = 8;
   /// The rotation a penetration move may use, as a fraction of the contact arm: a move of d at
   /// arm r turns the body by at most angularMoveLimit·|r| of distance (Millington's 0.2).
-  /// Range: [0, 10].
   double angularMoveLimit = 0.2;
   /// Below this |determinant| the contact matrix counts as singular (frictionless fallback).
-  /// Range: [0, 1].
   double singularMatrixTolerance = 1e-12;
   /// m. A point apart by no more than this counts as touching, so the round-off of a resolved
   /// point's zero overlap (1e-16 m) does not stop a collision passing along a row of balls, and
-  /// a face landing flat engages both corners together. Range: [0, 0.1].
+  /// a face landing flat engages both corners together.
   double touchingTolerance = 1e-9;
 
   // Refinements of ours, beyond the lecture; each is off in lecture() (docs/micro-collisions.md).
@@ -77,18 +72,14 @@ struct MicroCollisionSettings {
   bool passCapWhileProgressing = true;
   /// Rounds of one impulse per point over which progress is measured (at least 1; fewer never
   /// pass the cap).
-  /// Range: [1, 10000].
   int progressRounds = 20;
   /// The least fraction by which the waiting total must fall over progressRounds rounds.
-  /// Range: [0, 1].
   double minimumProgress = 0.2;
   /// Most impulses per contact point in a step when passing the cap.
-  /// Range: [0, 10000] (more would let one run take hours).
   int velocityIterationsPerContactLimit = 1000;
   /// A pair is resolved together only when its matrix is this well conditioned: for a move,
   /// k₀₀² < limit · det K (Box2D 2.4's test); for an impulse, det K > (product of K's diagonal) /
   /// limit. A narrower pair (two points almost at one place) is resolved one point at a time.
-  /// Range: [1, 1e+12].
   double pairConditionLimit = 1000.0;
 
   /// The plain method of the lecture: every refinement above off, and positionEpsilon 1e-5

@@ -10,22 +10,17 @@ namespace impulse2d {
 struct LemkeSettings {
   /// The method gives up (and says so) after this many pivots, or after maxPivotsPerVariable
   /// per variable of the problem if that is fewer.
-  /// Range: [1, 1000000] (more would let one run take hours).
   int maxPivots = 100000;
   /// A path that reaches a solution takes a few pivots per variable (at most 4 seen, on a
   /// 10-row pyramid's landing); one that round-off sends in circles would run to maxPivots.
-  /// Range: [1, 100] (more would let one run take hours).
   int maxPivotsPerVariable = 20;
   /// A column entry must exceed this times the column's largest entry (or 1) to be a pivot:
   /// smaller entries are round-off of zeros, and pivoting on one wrecks the basis inverse.
-  /// Range: [0, 1].
   double pivotTolerance = 1e-9;
   /// Ratios closer than this (relative) count as a tie, broken lexicographically.
-  /// Range: [0, 1].
   double tieTolerance = 1e-12;
   /// Harris's ratio test (RatioTest::Harris) may overshoot a basic variable by this much,
   /// relative to the largest basic value, to take a larger pivot.
-  /// Range: [0, 1].
   double harrisTolerance = 1e-11;
 };
 
@@ -33,12 +28,10 @@ struct LemkeSettings {
 struct ActiveSetSettings {
   /// Projected Gauss–Seidel sweeps from last step's impulses that guess each point's state
   /// (separated, sticking, sliding) before the first factorization.
-  /// Range: [0, 10000] (more would let one run take hours).
   int guessSweeps = 20;
   /// After guessSweeps, the sweeps go on while one still changes a point's state, up to this
   /// many: a pile's first step starts from zero impulses, and its states settle only once the
   /// weight has reached the bottom, about one row a sweep.
-  /// Range: [0, 10000] (more would let one run take hours).
   int maxGuessSweeps = 400;
   /// A point solved last step (its impulses and state carried over by feature id) starts in the
   /// state it was solved in; only new points take the state the sweeps guess, and a pile
@@ -47,11 +40,9 @@ struct ActiveSetSettings {
   /// 45–95 such points a step. Off: every point's state comes from the sweeps.
   bool warmStates = true;
   /// The method gives up (and says so) after this many factorizations.
-  /// Range: [0, 10000] (more would let one run take hours).
   int maxFactorizations = 200;
   /// Block flips in a row that do not lower the number of violated points before the method
   /// flips one point at a time (Júdice–Pires' safeguard against cycling).
-  /// Range: [0, 10000].
   int blockFailures = 3;
   /// A flip that does not lower the number of violated points below the best seen goes back to
   /// the best states and flips half as many of their violators, the worst first, then a
@@ -70,7 +61,6 @@ struct ActiveSetSettings {
   /// of redundant contacts (a box face's two points, a pyramid) regular. The shift of the
   /// velocities it causes is taken out again by corrections centred on the last answer
   /// (`refinements`).
-  /// Range: [0, 1].
   double regularization = 1e-8;
   /// The regularization is centred on the guess (last step's impulses at a point carried over,
   /// the sweeps' at a new one) instead of on zero: a resting pile's answer then needs no
@@ -80,15 +70,12 @@ struct ActiveSetSettings {
   /// Most corrections on fresh factors that take the regularization's shift out (proximal point
   /// steps; each removes all but about `regularization` of what is left, so one usually does).
   /// On kept factors the corrections may go on for up to keptRounds.
-  /// Range: [0, 100] (more would let one run take hours).
   int refinements = 3;
   /// The corrections stop once the residual of the unregularized system is below this fraction
   /// of |b| + |A||x|: a thousandth of residualTolerance, and above the floor that a pile's
   /// redundant rows leave (about 1e-14, rising slowly as a resting pyramid settles).
-  /// Range: [0, 1].
   double refinementTolerance = 1e-12;
   /// A condition counts as violated beyond this fraction of the island's impulse scale.
-  /// Range: [0, 1].
   double flipTolerance = 1e-12;
   /// The factors of each island's last factorized system are kept, and a step's first system of
   /// the same size is first solved by GMRES preconditioned by them (KeptFactorization): a
@@ -97,7 +84,6 @@ struct ActiveSetSettings {
   /// GMRES rounds on kept factors before the system is factorized after all, and then at most as
   /// many corrections that take the regularization out: each costs one solve with the factors,
   /// about 1/30 of a factorization of a 20-row pyramid's system.
-  /// Range: [0, 10000] (more would let one run take hours).
   int keptRounds = 8;
   /// Solves with kept factors beyond a system's first solve and first correction (GMRES
   /// rounds, further corrections), summed since the factors were made, after which the next
@@ -105,17 +91,14 @@ struct ActiveSetSettings {
   /// solves (35 ms against 0.79 ms), so a pile whose kept factors have drifted from it pays at
   /// most about twice what a factorization at the right moment would cost, and one that rests
   /// on them pays nothing more.
-  /// Range: [0, 100000].
   int refactorAfterSolves = 40;
   /// A solve on kept factors is done once the residual of A x = b is below this fraction of
   /// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.
-  /// Range: [0, 1].
   double keptTolerance = 1e-14;
   /// The factorization takes a row's own diagonal entry as its pivot when that entry is at
   /// least this fraction of the largest in its column, so the symmetric fill-reducing order
   /// holds; below, it pivots on the largest. The regularized pivots of a redundant pile are about
   /// `regularization` of their column and must pass; 1 is partial pivoting.
-  /// Range: [0, 1].
   double diagonalPivotThreshold = 1e-12;
 };
 
@@ -123,7 +106,6 @@ struct ActiveSetSettings {
 struct ReferenceSolverSettings {
   /// Required residual of the physical conditions (N s), relative to the step's impulse scale:
   /// the largest of the impulses, each point's cancelling impulses and the contact bodies' momenta.
-  /// Range: (0, 1].
   double residualTolerance = 1e-9;
   /// Lemke's pivot limit and tolerances; reaching the limit is reported, never silently accepted.
   LemkeSettings lemke;
@@ -131,22 +113,18 @@ struct ReferenceSolverSettings {
   /// lexicographic rule can then still end on a ray. Lemke is retried once with q moved by
   /// this much (relative to its largest entry, growing along the rows), the textbook remedy;
   /// the answer is checked against the unperturbed problem, so it cannot pass unnoticed.
-  /// Range: [0, 0.001].
   double degeneracyPerturbation = 1e-10;
   /// Then Lemke is tried with Harris's ratio test, and then along up to this many other covering
   /// vectors (entries drawn in [0.5, 2) from a fixed seed), each with both ratio tests: every
   /// path ends at a solution in exact arithmetic, but on a landing pile round-off and tiny pivots
   /// end some of them on a ray or an answer the residual check rejects. 0: no such retries.
-  /// Range: [0, 100] (more would let one run take hours).
   int coveringRetries = 3;
   /// Islands of up to this many contact points are solved by Lemke; larger ones by the active
   /// set, whose cost grows with the sparse factorization instead of Lemke's points³ (a stack of
   /// 10 boxes has 20 points, a 10-row pyramid 280).
-  /// Range: [0, 500] (a larger island would take Lemke minutes each step).
   int lemkeIslandPoints = 40;
   /// A large island on which the active set fails is given to Lemke if it has at most this many
   /// points; larger ones fail with the active set's reason.
-  /// Range: [0, 500] (a larger island would take Lemke minutes each step).
   int lemkeFallbackPoints = 300;
   /// The active set of large islands.
   ActiveSetSettings activeSet;

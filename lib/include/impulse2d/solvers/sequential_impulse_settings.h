@@ -10,12 +10,10 @@ struct SequentialImpulseSettings {
   /// Most sweeps over all contacts per step. A stack of n boxes starting from rest needs about n
   /// sweeps before the weight reaches the bottom within one step, and a 40-row pyramid rests only
   /// with about 40; once a pile rests the sweeps stop after one (convergedImpulseChange).
-  /// Range: [0, 10000] (more would let one run take hours).
   int velocityIterations = 40;
   /// The sweeps stop once a whole sweep changed no impulse by more than this fraction of the
   /// largest normal total: the answer has converged (at 1e-6 the figures equal full sweeps' to
   /// three digits; docs/sequential-impulses.md). 0: always velocityIterations, the text's method.
-  /// Range: [0, 1000].
   double convergedImpulseChange = 1e-6;
   /// Clamp each contact's running total of impulse rather than each impulse.
   bool accumulateImpulses = true;

@@ -12,21 +12,19 @@ struct SoftStepSettings {
   // Box2D v3's method and constants (the preset box2d_v3 keeps these).
 
   /// Substeps per world step, each: velocities, warm start, biased solve, positions, relax
-  /// (Box2D v3: 4). Range: [1, 1000] (more would let one run take hours).
+  /// (Box2D v3: 4).
   int substeps = 4;
   /// Hz. A contact's stiffness as the frequency it would ring at on its own mass (v3: 30).
-  /// Range: (0, 10000].
   double contactHertz = 30.0;
   /// The stiffness never exceeds this fraction of the substep rate, so several substeps resolve a
-  /// spring's period (v3: a quarter). Range: (0, 1].
+  /// spring's period (v3: a quarter).
   double maxHertzPerSubstepRate = 0.25;
   /// The contact spring's damping ratio; above 1 it creeps back without overshoot (v3: 10).
-  /// Range: [0, 10000].
   double dampingRatio = 10.0;
   /// Contacts with a static body are this many times stiffer in hertz, so the ground holds a
-  /// pile's weight (v3: 2). Range: (0, 100].
+  /// pile's weight (v3: 2).
   double staticHertzFactor = 2.0;
-  /// m/s. The fastest the bias pushes overlapping bodies apart (v3: 3). Range: [0, 1000].
+  /// m/s. The fastest the bias pushes overlapping bodies apart (v3: 3).
   double maxPushVelocity = 3.0;
   /// Soft constraints from hertz and damping; false: the rigid limit, each substep asks the
   /// whole overlap back.
@@ -47,15 +45,15 @@ struct SoftStepSettings {
   /// little (v3's default), so a leaning box's Jacobians do not turn and a 40-box stack stands.
   bool contactRecycling = true;
   /// m. A manifold is found anew once B has moved this far relative to A, counting the turn at
-  /// the farther-reaching body's extent (v3: 10 × its 0.005 m slop). Range: [0, 1].
+  /// the farther-reaching body's extent (v3: 10 × its 0.005 m slop).
   double recycleDistance = 0.05;
-  /// rad. ...or once either body has turned this far (v3: cosine above 0.98). Range: [0, π].
+  /// rad. ...or once either body has turned this far (v3: cosine above 0.98).
   double recycleLargestTurn = 0.2;
   /// A restitution pass after the substeps: a closing contact leaves at −e times its closing
   /// speed before the step (v3's b2ApplyRestitution); false: soft contacts do not bounce.
   bool restitution = true;
-  /// m/s. Below this closing speed a contact does not bounce (v3: 1). Range: [0, 1000].
-  double restitutionVelocityThreshold = 1.0;
+  /// m/s. Below this closing speed a contact does not bounce (v3: 1).
+  double restitutionThreshold = 1.0;
 
   // Ours beyond Box2D v3: each true turns a refinement on; the failure each fixes and its test
   // are in docs/soft-step.md, "The published method".
@@ -79,7 +77,7 @@ struct SoftStepSettings {
   bool renewRoundNormals = true;
   /// A two-point manifold whose points both bounce gets its restitution impulses as one exact
   /// 2×2 block (two_point_block.h), so a flat box leaves straight up.
-  BlockSolveSettings pairRestitution;
+  BlockSolveSettings restitutionBlock;
   /// One friction solve after a bounce, bounded by μ times the normal impulse with the bounce in
   /// it (Newton's and Coulomb's laws together).
   bool frictionInRestitution = true;
