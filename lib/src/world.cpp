@@ -143,6 +143,7 @@ void World::findContacts(double h, const ContactFinding& finding) {
   findCandidatePairs(h);
   listStaticBodies();
   ManifoldIterator old = previousManifolds_.cbegin();
+  if (finding.keeping) finding.keeping->startFinding();
   for (const BodyPair& pair : candidatePairs_) {
     old = keepSleepingManifolds(old, pair);
     const bool hadManifold = old != previousManifolds_.cend() && keyOf(*old) == pair;
@@ -154,6 +155,10 @@ void World::findContacts(double h, const ContactFinding& finding) {
     }
     if (!collidePair(pair, h, manifold)) continue;
     if (hadManifold) carryOverImpulses(*old, manifold);
+    if (finding.keeping) {
+      finding.keeping->found(manifold, bodies_,
+                             contactDistance(bodies_[pair.first], bodies_[pair.second], h));
+    }
     manifolds_.push_back(manifold);
   }
   keepSleepingManifolds(old, {int(bodies_.size()), 0});
@@ -182,7 +187,6 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
       dropInternalEdgePoints(bodies_, staticBodies_, manifold) == 0) {
     return false;
   }
-  manifold.found = {a.angle, b.angle, a.toLocal(b.position), distance};
   manifold.friction = mixFriction(a.friction, b.friction);
   manifold.restitution = mixRestitution(a.restitution, b.restitution);
   return true;
