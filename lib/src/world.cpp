@@ -247,7 +247,23 @@ void World::findCandidatePairs(double h) {
                                    std::max(first.body, second.body));
     }
   }
-  std::sort(candidatePairs_.begin(), candidatePairs_.end());
+  sortCandidatePairs();
+}
+
+// The candidate pairs by (A, B), in time linear in their number: counted and placed by A (a
+// counting sort), then each body's few partners sorted by B.
+void World::sortCandidatePairs() {
+  pairsEnd_.assign(bodies_.size() + 1, 0);
+  for (const BodyPair& pair : candidatePairs_) ++pairsEnd_[pair.first + 1];
+  for (size_t i = 1; i < pairsEnd_.size(); ++i) pairsEnd_[i] += pairsEnd_[i - 1];
+  sortedPairs_.resize(candidatePairs_.size());
+  for (const BodyPair& pair : candidatePairs_) sortedPairs_[pairsEnd_[pair.first]++] = pair;
+  int begin = 0;
+  for (size_t a = 0; a < bodies_.size(); ++a) {
+    std::sort(sortedPairs_.begin() + begin, sortedPairs_.begin() + pairsEnd_[a]);
+    begin = pairsEnd_[a];
+  }
+  candidatePairs_.swap(sortedPairs_);
 }
 
 // Each body's bounds, grown by the distance it covers in the substep when contacts are
