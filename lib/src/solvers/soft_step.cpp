@@ -66,6 +66,23 @@ std::optional<Vec2> touchingNormal(const RoundFeature& a, const RoundFeature& b,
   return Vec2(atTouch / distance);
 }
 
+/// The relative velocity along d (unit) at a contact point whose torque arms, r × d from A's and
+/// B's centres, are torqueArmA and torqueArmB: (vB − vA)·d + ωB (rB × d) − ωA (rA × d).
+double velocityAlong(const SolverBody& a, const SolverBody& b, const Vec2& d, double torqueArmA,
+                     double torqueArmB) {
+  return (b.velocity - a.velocity).dot(d) + b.angularVelocity * torqueArmB -
+         a.angularVelocity * torqueArmA;
+}
+
+/// An impulse λ along d at that point: −λd to A, +λd to B.
+void applyAlong(SolverBody& a, SolverBody& b, const Vec2& d, double torqueArmA, double torqueArmB,
+                double impulse) {
+  a.velocity -= (a.inverseMass * impulse) * d;
+  a.angularVelocity -= a.inverseInertia * impulse * torqueArmA;
+  b.velocity += (b.inverseMass * impulse) * d;
+  b.angularVelocity += b.inverseInertia * impulse * torqueArmB;
+}
+
 }  // namespace
 
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
@@ -151,7 +168,10 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     constraint.turnArmB = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyB.shape);
     const double pairHertz =
         bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
-    const FoundManifold* foundManifold = recycling_.foundManifold(manifold, found);
+    constraint.softness = contactSoftness(pairHertz, h);
+    const FoundManifold* foundManifold = recycling_.mayKeep(manifold, context.bodies)
+                                             ? recycling_.foundManifold(manifold, found)
+                                             : nullptr;
     for (int i = 0; i < manifold.pointCount; ++i) {
       ConstraintPoint& cp = constraint.points[i];
       const ContactPoint& point = manifold.points[i];
@@ -160,7 +180,6 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
                                      : FoundPoint{point.point - bodyA.position,
                                                   point.point - bodyB.position, point.penetration};
       placePoint(manifold, point, asFound, bodyA, bodyB, lastSubstep_.recalled(m, i), cp);
-      cp.softness = pointSoftness(pairHertz, h);
     }
     if (settings_.speculativeAtTouch) placeAtTouch(context, constraint);
     prepareMasses(constraint);
@@ -226,13 +245,17 @@ void SoftStepSolver::prepareMasses(Constraint& constraint) const {
     const double kTangent = inverseEffectiveMass(a, b, cp.armA, cp.armB, tangent);
     cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
     cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
+    cp.normalArmA = cross(cp.armA, normal);
+    cp.normalArmB = cross(cp.armB, normal);
+    cp.tangentArmA = cross(cp.armA, tangent);
+    cp.tangentArmB = cross(cp.armB, tangent);
     cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
   }
 }
 
-// The spring of a point: the contact's hertz and damping, or the rigid limit without soft
+// The spring of a contact's points: its hertz and the damping, or the rigid limit without soft
 // contacts.
-Softness SoftStepSolver::pointSoftness(double hertz, double h) const {
+Softness SoftStepSolver::contactSoftness(double hertz, double h) const {
   if (!settings_.softContacts) return rigidSoftness(h);
   return makeSoftness(hertz, settings_.dampingRatio, h);
 }
@@ -367,7 +390,7 @@ inline SoftStepSolver::NormalRow SoftStepSolver::normalRow(const Constraint& con
   const double separation = cp.baseSeparation + anchorsMoved.dot(constraint.normal);
   if (separation > 0.0) return {separation * inverseSubstep_, 1.0, 0.0};
   if (!useBias) return {};
-  const Softness& soft = cp.softness;
+  const Softness& soft = constraint.softness;
   return {std::max(soft.biasRate * separation, -pushVelocity_), soft.massScale, soft.impulseScale};
 }
 
@@ -381,7 +404,7 @@ inline double SoftStepSolver::solveNormals(Constraint& constraint, const Substep
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[i];
     const NormalRow row = normalRow(constraint, cp, movedA, movedB, useBias);
-    const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
+    const double vn = velocityAlong(a, b, normal, cp.normalArmA, cp.normalArmB);
     const double impulse =
         -cp.normalMass * row.massScale * (vn + row.bias) - row.impulseScale * cp.normalImpulse;
     const double total = std::max(cp.normalImpulse + impulse, 0.0);
@@ -389,7 +412,7 @@ inline double SoftStepSolver::solveNormals(Constraint& constraint, const Substep
     cp.wantedImpulse = impulse;
     cp.normalImpulse = total;
     cp.totalNormalImpulse += change;
-    applyPairImpulse(a, b, cp.armA, cp.armB, change * normal);
+    applyAlong(a, b, normal, cp.normalArmA, cp.normalArmB, change);
     largestChange = std::max(largestChange, std::abs(change));
   }
   return largestChange;
@@ -401,13 +424,13 @@ inline void SoftStepSolver::solveFriction(Constraint& constraint, SolverBody& a,
   const Vec2 tangent = leftPerpendicular(constraint.normal);
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[i];
-    const double vt = relativeVelocity(a, b, cp.armA, cp.armB).dot(tangent);
+    const double vt = velocityAlong(a, b, tangent, cp.tangentArmA, cp.tangentArmB);
     const double limit = constraint.friction * cp.normalImpulse;
     const double total = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
     const double change = total - cp.tangentImpulse;
     cp.tangentImpulse = total;
     cp.totalTangentImpulse += change;
-    applyPairImpulse(a, b, cp.armA, cp.armB, change * tangent);
+    applyAlong(a, b, tangent, cp.tangentArmA, cp.tangentArmB, change);
   }
 }
 

@@ -3,17 +3,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
+#include <cstdint>
 
 #include "impulse2d/collide.h"
 
 namespace impulse2d {
 namespace {
 
-/// Records and manifolds are ordered by their two bodies.
+/// Records and manifolds are ordered by their two bodies: A, then B.
 template <class T>
-std::pair<int, int> pairOf(const T& recordOrManifold) {
-  return {recordOrManifold.bodyA, recordOrManifold.bodyB};
+std::uint64_t pairOf(const T& recordOrManifold) {
+  return std::uint64_t(std::uint32_t(recordOrManifold.bodyA)) << 32 |
+         std::uint32_t(recordOrManifold.bodyB);
+}
+
+/// The rotation a body has turned through since its rotation was `then`, from its cached rotation.
+Mat2 turnSinceFound(const Body& body, const Mat2& then) {
+  return body.rotation * then.transpose();
 }
 
 }  // namespace
@@ -58,11 +64,11 @@ bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& b
   const Body& b = bodies[previous.bodyB];
   kept = previous;
   const bool roundSurfaces = settings_.roundSurfaces;
-  const auto armTurn = [roundSurfaces](const Body& body, double turn) {
-    return !roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : 0.0;
+  const auto armTurn = [roundSurfaces](const Body& body, const Mat2& turn) {
+    return !roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : Mat2::Identity();
   };
-  const Mat2 turnOfA = rotation(armTurn(a, a.angle - found->pose.angleA));
-  const Mat2 turnOfB = rotation(armTurn(b, b.angle - found->pose.angleB));
+  const Mat2 turnOfA = armTurn(a, turnSinceFound(a, found->pose.rotationA));
+  const Mat2 turnOfB = armTurn(b, turnSinceFound(b, found->pose.rotationB));
   for (int i = 0; i < kept.pointCount; ++i) {
     ContactPoint& point = kept.points[i];
     const FoundPoint& foundPoint = found->points[i];
@@ -76,21 +82,29 @@ bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& b
   return true;
 }
 
-bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& previous,
-                                   const std::vector<Body>& bodies) const {
-  if (!settings_.contactRecycling || settings_.recycleDistance <= 0.0 || previous.pointCount == 0) {
+bool ContactRecycling::mayKeep(const Manifold& manifold, const std::vector<Body>& bodies) const {
+  if (!settings_.contactRecycling || settings_.recycleDistance <= 0.0 || manifold.pointCount == 0) {
     return false;
   }
+  const Shape& a = bodies[manifold.bodyA].shape;
+  const Shape& b = bodies[manifold.bodyB].shape;
+  return !settings_.renewRoundNormals || !normalRunsToCentre(a, b, manifold);
+}
+
+bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& previous,
+                                   const std::vector<Body>& bodies) const {
+  if (!mayKeep(previous, bodies)) return false;
   const Body& a = bodies[previous.bodyA];
   const Body& b = bodies[previous.bodyB];
-  if (settings_.renewRoundNormals && normalRunsToCentre(a.shape, b.shape, previous)) return false;
   const double turnA = a.angle - found.pose.angleA;
   const double turnB = b.angle - found.pose.angleB;
   const double largestTurn = settings_.recycleLargestTurn;
   if (std::abs(turnA) > largestTurn || std::abs(turnB) > largestTurn) return false;
-  const double reach =
-      std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
-  const double moved = offsetMoved(a, b, found.pose) + reach * std::abs(std::sin(turnB - turnA));
+  const Mat2 relativeTurn =
+      turnSinceFound(b, found.pose.rotationB) * turnSinceFound(a, found.pose.rotationA).transpose();
+  const double sineOfRelativeTurn = relativeTurn(1, 0);
+  const double moved =
+      offsetMoved(a, b, found.pose) + found.pose.reach * std::abs(sineOfRelativeTurn);
   return moved < recycleDistance(found, previous);
 }
 
@@ -117,23 +131,28 @@ double ContactRecycling::offsetMoved(const Body& a, const Body& b, const FoundPo
   if (!settings_.recycleInWorldFrame) {
     return (a.toLocal(b.position) - found.relativePosition).norm();
   }
-  return (b.position - a.position - rotation(found.angleA) * found.relativePosition).norm();
+  return (b.position - a.position - found.rotationA * found.relativePosition).norm();
 }
 
-// The bodies are where the narrow phase just found the manifold.
+// The bodies are where the narrow phase just found the manifold. One that may not be kept needs
+// no record: its points are where they were found.
 void ContactRecycling::found(const Manifold& manifold, const std::vector<Body>& bodies,
                              double distance) {
+  if (!mayKeep(manifold, bodies)) return;
   recordOf(manifold, bodies);
   const Body& a = bodies[manifold.bodyA];
   const Body& b = bodies[manifold.bodyB];
-  FoundManifold& record = records_.emplace_back();
-  record.bodyA = manifold.bodyA;
-  record.bodyB = manifold.bodyB;
-  record.pose = {a.angle, b.angle, a.toLocal(b.position), distance};
-  for (int i = 0; i < manifold.pointCount; ++i) {
+  const double reach =
+      std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
+  const auto asFound = [&](int i) {
     const ContactPoint& point = manifold.points[i];
-    record.points[i] = {point.point - a.position, point.point - b.position, point.penetration};
-  }
+    return FoundPoint{point.point - a.position, point.point - b.position, point.penetration};
+  };
+  records_.push_back(
+      {manifold.bodyA,
+       manifold.bodyB,
+       {a.angle, b.angle, a.rotation, b.rotation, a.toLocal(b.position), distance, reach},
+       {asFound(0), manifold.pointCount > 1 ? asFound(1) : FoundPoint{}}});
 }
 
 const FoundManifold* ContactRecycling::foundManifold(const Manifold& manifold,
@@ -142,9 +161,9 @@ const FoundManifold* ContactRecycling::foundManifold(const Manifold& manifold,
   if (from < records_.size() && pairOf(records_[from]) == pairOf(manifold)) return &records_[from];
   // A pair kept asleep after the last pair the world looked at, woken since.
   const auto rest = previous_.begin() + std::ptrdiff_t(next_);
-  const auto record = std::lower_bound(
-      rest, previous_.end(), pairOf(manifold),
-      [](const FoundManifold& r, const std::pair<int, int>& p) { return pairOf(r) < p; });
+  const auto record =
+      std::lower_bound(rest, previous_.end(), pairOf(manifold),
+                       [](const FoundManifold& r, std::uint64_t pair) { return pairOf(r) < pair; });
   return record != previous_.end() && pairOf(*record) == pairOf(manifold) ? &*record : nullptr;
 }
 

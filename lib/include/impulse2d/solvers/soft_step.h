@@ -73,6 +73,11 @@ class SoftStepSolver : public ContactSolver {
     Vec2 armB = Vec2::Zero();
     /// Separation minus (armB − armA)·n: adding (cB + rB − cA − rA)·n now gives the separation.
     double baseSeparation = 0.0;
+    /// The torque arms rA × n, rB × n, rA × t, rB × t, for the solves (fixed, as the arms are).
+    double normalArmA = 0.0;
+    double normalArmB = 0.0;
+    double tangentArmA = 0.0;
+    double tangentArmB = 0.0;
     double normalMass = 0.0;
     double tangentMass = 0.0;
     double normalImpulse = 0.0;
@@ -81,7 +86,6 @@ class SoftStepSolver : public ContactSolver {
     double totalTangentImpulse = 0.0;  ///< all friction impulse applied this step
     double relativeVelocity = 0.0;     ///< vn before the step, for restitution
     double wantedImpulse = 0.0;        ///< the last normal solve's impulse before clamping
-    Softness softness;                 ///< this point's spring
   };
   struct Constraint : SolverManifold {
     /// The arms that turn with their bodies within the step: not a circle's (roundSurfaces).
@@ -89,6 +93,7 @@ class SoftStepSolver : public ContactSolver {
     bool turnArmB = true;
     /// Normal and arms taken from where round surfaces will touch (speculativeAtTouch).
     bool atTouch = false;
+    Softness softness;  ///< the spring of its points
     std::array<ConstraintPoint, 2> points;
   };
   /// A point's normal and friction impulses.
@@ -123,7 +128,7 @@ class SoftStepSolver : public ContactSolver {
                   ConstraintPoint& cp) const;
   void placeAtTouch(const StepContext& context, Constraint& constraint) const;
   void prepareMasses(Constraint& constraint) const;
-  Softness pointSoftness(double hertz, double h) const;
+  Softness contactSoftness(double hertz, double h) const;
   void integrateVelocities();
   void warmStart();
   double solve(const StepContext& context, bool useBias, int substep);

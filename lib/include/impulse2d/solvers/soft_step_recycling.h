@@ -17,8 +17,11 @@ namespace impulse2d {
 struct FoundPose {
   double angleA = 0.0;                   ///< rad
   double angleB = 0.0;                   ///< rad
+  Mat2 rotationA = Mat2::Identity();     ///< A's rotation then, so turns need no trigonometry
+  Mat2 rotationB = Mat2::Identity();     ///< B's rotation then
   Vec2 relativePosition = Vec2::Zero();  ///< m: B's centre in A's body frame
   double distance = 0.0;                 ///< m: the contact distance the points were found within
+  double reach = 0.0;  ///< m: the larger extent of the pair's dynamic bodies (maxExtent)
 };
 
 /// A contact point as the narrow phase found it, world frame.
@@ -49,6 +52,9 @@ class ContactRecycling : public ManifoldKeeping {
   bool keep(const Manifold& previous, const std::vector<Body>& bodies, Manifold& kept) override;
   void found(const Manifold& manifold, const std::vector<Body>& bodies, double distance) override;
 
+  /// Whether a manifold like this one may be kept at all: recycling is on, and its normal is not
+  /// one that is found anew every step (renewRoundNormals). One that may not was found this step.
+  bool mayKeep(const Manifold& manifold, const std::vector<Body>& bodies) const;
   /// How the world's manifold of that pair was found (null if it was found without this), from
   /// the last call of startFinding on. A caller walking the manifolds in the world's order passes
   /// the same `from` (first 0) to each call, and each search starts there.
