@@ -39,7 +39,7 @@ int noContact(Manifold& manifold) {
 }
 
 /// A contact point from the points on A's and B's surfaces (world): impulses act at
-/// contactPointBetween (contact.h); the arms to it from the centres are kept as found.
+/// contactPointBetween (contact.h).
 ContactPoint contactPoint(const Body& a, const Body& b, const Vec2& onA, const Vec2& onB,
                           double penetration, FeatureId id) {
   ContactPoint point;
@@ -48,9 +48,6 @@ ContactPoint contactPoint(const Body& a, const Body& b, const Vec2& onA, const V
   point.anchorB = b.toLocal(onB);
   point.penetration = penetration;
   point.id = id;
-  point.foundArmA = point.point - a.position;
-  point.foundArmB = point.point - b.position;
-  point.foundPenetration = penetration;
   return point;
 }
 

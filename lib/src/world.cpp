@@ -142,6 +142,7 @@ void World::findContacts(double h, const ContactFinding& finding) {
   findCandidatePairs(h);
   listStaticBodies();
   ManifoldIterator old = previousManifolds_.cbegin();
+  if (finding.keeping) finding.keeping->startFinding();
   for (const BodyPair& pair : candidatePairs_) {
     old = keepSleepingManifolds(old, pair);
     const bool hadManifold = old != previousManifolds_.cend() && keyOf(*old) == pair;
@@ -153,6 +154,10 @@ void World::findContacts(double h, const ContactFinding& finding) {
     }
     if (!collidePair(pair, h, manifold)) continue;
     if (hadManifold) carryOverImpulses(*old, manifold);
+    if (finding.keeping) {
+      finding.keeping->found(manifold, bodies_,
+                             contactDistance(bodies_[pair.first], bodies_[pair.second], h));
+    }
     manifolds_.push_back(manifold);
   }
   keepSleepingManifolds(old, {int(bodies_.size()), 0});
@@ -181,7 +186,6 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
       dropInternalEdgePoints(bodies_, staticBodies_, manifold) == 0) {
     return false;
   }
-  manifold.found = {a.angle, b.angle, a.toLocal(b.position), distance};
   manifold.friction = mixFriction(a.friction, b.friction);
   manifold.restitution = mixRestitution(a.restitution, b.restitution);
   return true;
@@ -242,7 +246,23 @@ void World::findCandidatePairs(double h) {
                                    std::max(first.body, second.body));
     }
   }
-  std::sort(candidatePairs_.begin(), candidatePairs_.end());
+  sortCandidatePairs();
+}
+
+// The candidate pairs by (A, B), in time linear in their number: counted and placed by A (a
+// counting sort), then each body's few partners sorted by B.
+void World::sortCandidatePairs() {
+  pairsEnd_.assign(bodies_.size() + 1, 0);
+  for (const BodyPair& pair : candidatePairs_) ++pairsEnd_[pair.first + 1];
+  for (size_t i = 1; i < pairsEnd_.size(); ++i) pairsEnd_[i] += pairsEnd_[i - 1];
+  sortedPairs_.resize(candidatePairs_.size());
+  for (const BodyPair& pair : candidatePairs_) sortedPairs_[pairsEnd_[pair.first]++] = pair;
+  int begin = 0;
+  for (size_t a = 0; a < bodies_.size(); ++a) {
+    std::sort(sortedPairs_.begin() + begin, sortedPairs_.begin() + pairsEnd_[a]);
+    begin = pairsEnd_[a];
+  }
+  candidatePairs_.swap(sortedPairs_);
 }
 
 // Each body's bounds, grown by the distance it covers in the substep when contacts are

@@ -45,14 +45,6 @@ struct ContactPoint {
   double penetration = 0.0;     ///< m, along the normal; negative is a gap
   /// the features that made it, to carry impulses between steps
   FeatureId id = 0;
-  /// m, world frame: the arms from A's and B's centres to `point`, and the penetration, when the
-  /// narrow phase found the point. A manifold a method keeps across steps
-  /// (ManifoldKeeping, solver.h) keeps them as they were and measures its overlap from them.
-  Vec2 foundArmA = Vec2::Zero();
-  /// B's arm, as found
-  Vec2 foundArmB = Vec2::Zero();
-  /// the penetration, as found
-  double foundPenetration = 0.0;
 
   /// N s. Total normal impulse the solver applied this step (the accumulated impulse, which a
   /// method may warm start the next step from).
@@ -71,14 +63,6 @@ struct ContactPoint {
 double mixFriction(double frictionA, double frictionB);
 double mixRestitution(double restitutionA, double restitutionB);
 
-/// Where two bodies were when the narrow phase found their manifold, for contact recycling.
-struct FoundPose {
-  double angleA = 0.0;                   ///< rad
-  double angleB = 0.0;                   ///< rad
-  Vec2 relativePosition = Vec2::Zero();  ///< m: B's centre in A's body frame
-  double distance = 0.0;                 ///< m: the contact distance the points were found within
-};
-
 /// A contact between two bodies: one normal and up to two points (the sign convention above).
 struct Manifold {
   int bodyA = -1;  ///< index into the world's bodies
@@ -90,7 +74,6 @@ struct Manifold {
   int pointCount = 0;            ///< 0, 1 or 2
   /// the first pointCount are used
   std::array<ContactPoint, 2> points;
-  FoundPose found;  ///< the bodies' pose when the points were found (recycled manifolds keep it)
 
   /// The friction direction: the normal turned a quarter turn counter-clockwise.
   Vec2 tangent() const { return leftPerpendicular(normal); }

@@ -81,14 +81,19 @@ struct SolveReport {
 };
 
 /// A method that may keep last substep's manifold of a pair instead of having it found anew (as
-/// Box2D v3 does while the pair's bodies move little).
+/// Box2D v3 does while the pair's bodies move little). The world tells it, pair by pair in the
+/// order of its manifolds (by bodyA, then bodyB), each manifold it keeps or finds.
 class ManifoldKeeping {
  public:
   virtual ~ManifoldKeeping() = default;
+  /// The world starts finding a substep's contacts.
+  virtual void startFinding() = 0;
   /// Writes the manifold to keep into `kept` and returns true, or returns false to have the pair
   /// found anew; `previous` is the pair's manifold of the last substep.
-  virtual bool keep(const Manifold& previous, const std::vector<Body>& bodies,
-                    Manifold& kept) const = 0;
+  virtual bool keep(const Manifold& previous, const std::vector<Body>& bodies, Manifold& kept) = 0;
+  /// The narrow phase found `manifold` anew within `distance` (m), the bodies where they are.
+  virtual void found(const Manifold& manifold, const std::vector<Body>& bodies,
+                     double distance) = 0;
 };
 
 /// How a method wants its contacts found.
@@ -97,7 +102,7 @@ struct ContactFinding {
   /// and narrow phases then reach as far as the pair can close in the substep.
   bool ahead = false;
   /// null, or what decides which manifolds the method keeps
-  const ManifoldKeeping* keeping = nullptr;
+  ManifoldKeeping* keeping = nullptr;
 };
 
 /// The shared stages of a substep, which a method's step calls in its own order (as Solver2D's

@@ -99,6 +99,7 @@ class World : public Simulation {
   void wakeDisturbedBodies();
   void findContacts(double h, const ContactFinding& finding);
   void findCandidatePairs(double h);
+  void sortCandidatePairs();
   void computeSweepBounds(double h);
   void sortSweepOrder();
   void layOutSweep();
@@ -129,8 +130,10 @@ class World : public Simulation {
   std::vector<Manifold> solverManifolds_;    ///< the awake ones, when some sleep
   std::vector<int> solvedIndex_;             ///< where each of solverManifolds_ sits in manifolds_
   std::vector<BodyPair> candidatePairs_;
-  std::vector<int> staticBodies_;  ///< indices of the static bodies, for internal edges
-  std::vector<Pose> startPoses_;   ///< by body: where it began the substep (continuous collision)
+  std::vector<BodyPair> sortedPairs_;  ///< the candidate pairs being sorted
+  std::vector<int> pairsEnd_;          ///< by body A: where its pairs end in sortedPairs_
+  std::vector<int> staticBodies_;      ///< indices of the static bodies, for internal edges
+  std::vector<Pose> startPoses_;  ///< by body: where it began the substep (continuous collision)
   /// One body in the sweep: its fattened bounds and whether it is awake.
   struct SweepEntry {
     Aabb bounds;

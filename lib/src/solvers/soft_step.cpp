@@ -64,26 +64,21 @@ std::optional<Vec2> touchingNormal(const RoundFeature& a, const RoundFeature& b,
   return Vec2(atTouch / distance);
 }
 
-// How far B may move before its manifold is found anew. Within the found distance a one-point
-// manifold (a vertex or a circle on a face) is found anew before any point of B has moved as far
-// as the distance it was found within, so a vertex that was not in it, such as the next vertex of
-// a polygon pivoting on one, cannot have reached A's surface unseen. A two-point manifold holds
-// both ends of an edge on the face: the next vertex of that polygon reaches the face only by
-// turning through the exterior angle there (72° for a regular pentagon, 45° for an octagon),
-// beyond the largest turn (11.5°) that finds it anew, so it keeps v3's recycle distance. Only a
-// corner flatter than the largest turn, on an irregular polygon, could still land unseen.
-double recycleDistance(const SoftStepSettings& settings, const Manifold& old) {
-  if (!settings.recycleWithinFoundDistance || old.pointCount == 2) return settings.recycleDistance;
-  return std::min(settings.recycleDistance, old.found.distance);
+/// The relative velocity along d (unit) at a contact point whose torque arms, r × d from A's and
+/// B's centres, are torqueArmA and torqueArmB: (vB − vA)·d + ωB (rB × d) − ωA (rA × d).
+double velocityAlong(const SolverBody& a, const SolverBody& b, const Vec2& d, double torqueArmA,
+                     double torqueArmB) {
+  return (b.velocity - a.velocity).dot(d) + b.angularVelocity * torqueArmB -
+         a.angularVelocity * torqueArmA;
 }
 
-// m. How far B's centre has moved relative to A's since the manifold was found: in A's frame (v3),
-// or in the world's, where the recycled normal and arms are kept, so that a pair turning together
-// by θ at a distance d counts as moving d θ.
-double offsetMoved(const SoftStepSettings& settings, const Body& a, const Body& b,
-                   const FoundPose& found) {
-  if (!settings.recycleInWorldFrame) return (a.toLocal(b.position) - found.relativePosition).norm();
-  return (b.position - a.position - rotation(found.angleA) * found.relativePosition).norm();
+/// An impulse λ along d at that point: −λd to A, +λd to B.
+void applyAlong(SolverBody& a, SolverBody& b, const Vec2& d, double torqueArmA, double torqueArmB,
+                double impulse) {
+  a.velocity -= (a.inverseMass * impulse) * d;
+  a.angularVelocity -= a.inverseInertia * impulse * torqueArmA;
+  b.velocity += (b.inverseMass * impulse) * d;
+  b.angularVelocity += b.inverseInertia * impulse * torqueArmB;
 }
 
 }  // namespace
@@ -109,49 +104,6 @@ void SoftStepSolver::step(StepStages& stages) {
   solveSubsteps(context);
   stages.clearForces();
   stages.storeImpulses();
-}
-
-// Contact recycling (Box2D v3): while neither body has turned more than the largest turn since the
-// manifold was found, and B's centre has moved less than the recycle distance in A's frame (plus
-// what the pair's relative turn moves a point at the farther-reaching dynamic body's largest
-// extent), the manifold is kept with its normal, ids, impulses and arms as found; only each
-// point's overlap follows how far the bodies moved since, the arms turned with them (a circle's
-// not, with roundSurfaces), as the substeps measure it. A normal that runs to a circle's centre
-// turns as the bodies move past each other, so such manifolds may be found anew every step
-// (renewRoundNormals; v3 keeps them).
-bool SoftStepSolver::keep(const Manifold& old, const std::vector<Body>& bodies,
-                          Manifold& manifold) const {
-  if (!settings_.contactRecycling || settings_.recycleDistance <= 0.0 || old.pointCount == 0) {
-    return false;
-  }
-  const Body& a = bodies[old.bodyA];
-  const Body& b = bodies[old.bodyB];
-  if (settings_.renewRoundNormals && normalRunsToCentre(a.shape, b.shape, old)) return false;
-  const double turnA = a.angle - old.found.angleA;
-  const double turnB = b.angle - old.found.angleB;
-  const double largestTurn = settings_.recycleLargestTurn;
-  if (std::abs(turnA) > largestTurn || std::abs(turnB) > largestTurn) return false;
-  const double reach =
-      std::max(a.isStatic() ? 0.0 : maxExtent(a.shape), b.isStatic() ? 0.0 : maxExtent(b.shape));
-  const double moved =
-      offsetMoved(settings_, a, b, old.found) + reach * std::abs(std::sin(turnB - turnA));
-  if (moved >= recycleDistance(settings_, old)) return false;
-  manifold = old;
-  const bool roundSurfaces = settings_.roundSurfaces;
-  const auto armTurn = [roundSurfaces](const Body& body, double turn) {
-    return !roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : 0.0;
-  };
-  const Mat2 turnOfA = rotation(armTurn(a, turnA));
-  const Mat2 turnOfB = rotation(armTurn(b, turnB));
-  for (int i = 0; i < manifold.pointCount; ++i) {
-    ContactPoint& point = manifold.points[i];
-    const Vec2 onA = a.position + turnOfA * point.foundArmA;
-    const Vec2 onB = b.position + turnOfB * point.foundArmB;
-    point.penetration = point.foundPenetration - (onB - onA).dot(manifold.normal);
-    point.point = contactPointBetween(onA, onB);
-    point.carried = true;
-  }
-  return true;
 }
 
 void SoftStepSolver::solveSubsteps(const StepContext& context) {
@@ -202,6 +154,7 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
       std::min(settings_.contactHertz, settings_.maxHertzPerSubstepRate * inverseSubstep_);
   constraints_.resize(context.manifolds.size());
   lastSubstep_.recall(context.manifolds);
+  std::size_t found = 0;
   for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     const Manifold& manifold = context.manifolds[m];
     Constraint& constraint = constraints_[m];
@@ -213,10 +166,18 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
     constraint.turnArmB = !settings_.roundSurfaces || surfaceTurnsWithShape(bodyB.shape);
     const double pairHertz =
         bodyA.isAwake() && bodyB.isAwake() ? hertz : settings_.staticHertzFactor * hertz;
+    constraint.softness = contactSoftness(pairHertz, h);
+    const FoundManifold* foundManifold = recycling_.mayKeep(manifold, context.bodies)
+                                             ? recycling_.foundManifold(manifold, found)
+                                             : nullptr;
     for (int i = 0; i < manifold.pointCount; ++i) {
       ConstraintPoint& cp = constraint.points[i];
-      placePoint(manifold, manifold.points[i], bodyA, bodyB, lastSubstep_.recalled(m, i), cp);
-      cp.softness = pointSoftness(pairHertz, h);
+      const ContactPoint& point = manifold.points[i];
+      const FoundPoint asFound = foundManifold
+                                     ? foundManifold->points[i]
+                                     : FoundPoint{point.point - bodyA.position,
+                                                  point.point - bodyB.position, point.penetration};
+      placePoint(manifold, point, asFound, bodyA, bodyB, lastSubstep_.recalled(m, i), cp);
     }
     if (settings_.speculativeAtTouch) placeAtTouch(context, constraint);
     prepareMasses(constraint);
@@ -226,14 +187,14 @@ void SoftStepSolver::prepareConstraints(const StepContext& context, double h) {
 // A point's arms and separation base as found (with roundSurfaces, moved along the normal to
 // where a circle will touch), and its impulses to warm start from.
 void SoftStepSolver::placePoint(const Manifold& manifold, const ContactPoint& point,
-                                const Body& bodyA, const Body& bodyB,
+                                const FoundPoint& found, const Body& bodyA, const Body& bodyB,
                                 const LastSubstepImpulses& warmStart, ConstraintPoint& cp) const {
   const Vec2 shift =
       settings_.roundSurfaces
-          ? towardsTouchingPoint(bodyA.shape, bodyB.shape, -point.foundPenetration, manifold.normal)
+          ? towardsTouchingPoint(bodyA.shape, bodyB.shape, -found.penetration, manifold.normal)
           : Vec2::Zero();
-  cp.armA = point.foundArmA + shift;
-  cp.armB = point.foundArmB + shift;
+  cp.armA = found.armA + shift;
+  cp.armB = found.armB + shift;
   cp.baseSeparation = -point.penetration - (cp.armB - cp.armA).dot(manifold.normal);
   cp.normalImpulse = settings_.warmStarting ? warmStart.normal : 0.0;
   cp.tangentImpulse = settings_.warmStarting ? warmStart.tangent : 0.0;
@@ -282,13 +243,17 @@ void SoftStepSolver::prepareMasses(Constraint& constraint) const {
     const double kTangent = inverseEffectiveMass(a, b, cp.armA, cp.armB, tangent);
     cp.normalMass = kNormal > 0.0 ? 1.0 / kNormal : 0.0;
     cp.tangentMass = kTangent > 0.0 ? 1.0 / kTangent : 0.0;
+    cp.normalArmA = cross(cp.armA, normal);
+    cp.normalArmB = cross(cp.armB, normal);
+    cp.tangentArmA = cross(cp.armA, tangent);
+    cp.tangentArmB = cross(cp.armB, tangent);
     cp.relativeVelocity = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
   }
 }
 
-// The spring of a point: the contact's hertz and damping, or the rigid limit without soft
+// The spring of a contact's points: its hertz and the damping, or the rigid limit without soft
 // contacts.
-Softness SoftStepSolver::pointSoftness(double hertz, double h) const {
+Softness SoftStepSolver::contactSoftness(double hertz, double h) const {
   if (!settings_.softContacts) return rigidSoftness(h);
   return makeSoftness(hertz, settings_.dampingRatio, h);
 }
@@ -302,47 +267,64 @@ void SoftStepSolver::integrateVelocities() {
 
 // The last substep's impulses applied up front; off, each substep starts from zero.
 void SoftStepSolver::warmStart() {
+  if (!settings_.warmStarting) {
+    for (Constraint& constraint : constraints_) {
+      for (ConstraintPoint& cp : constraint.points) cp.normalImpulse = cp.tangentImpulse = 0.0;
+    }
+    return;
+  }
   for (Constraint& constraint : constraints_) {
-    SubstepBody& a = bodies_[constraint.bodyA];
-    SubstepBody& b = bodies_[constraint.bodyB];
+    SolverBody a = bodies_[constraint.bodyA];
+    SolverBody b = bodies_[constraint.bodyB];
     const Vec2 tangent = leftPerpendicular(constraint.normal);
     for (int i = 0; i < constraint.pointCount; ++i) {
       ConstraintPoint& cp = constraint.points[i];
-      if (!settings_.warmStarting) {
-        cp.normalImpulse = 0.0;
-        cp.tangentImpulse = 0.0;
-        continue;
-      }
       cp.totalNormalImpulse += cp.normalImpulse;
       cp.totalTangentImpulse += cp.tangentImpulse;
       applyPairImpulse(a, b, cp.armA, cp.armB,
                        cp.normalImpulse * constraint.normal + cp.tangentImpulse * tangent);
     }
+    storeVelocities(a, bodies_[constraint.bodyA]);
+    storeVelocities(b, bodies_[constraint.bodyB]);
   }
 }
 
 // One Gauss-Seidel sweep: the normal impulses of each contact, then its friction (with
 // frictionInRelax, only in the relax sweep). With bias the overlap is pushed out softly; without
-// (relax) only the velocities are made consistent.
+// (relax) only the velocities are made consistent. Each contact works on copies of its two
+// bodies' velocities, written back once it is solved, as Box2D v3's b2SolveContact does.
 // Returns the largest normal impulse change, the sweep's residual.
 double SoftStepSolver::solve(const StepContext& context, bool useBias, int substep) {
-  const bool frictionInRelax = settings_.frictionInRelax && settings_.relax;
+  const bool friction = !useBias || !(settings_.frictionInRelax && settings_.relax);
   double largestChange = 0.0;
   for (Constraint& constraint : constraints_) {
-    SubstepBody& a = bodies_[constraint.bodyA];
-    SubstepBody& b = bodies_[constraint.bodyB];
-    const std::array<PointImpulses, 2> before = {
-        PointImpulses{constraint.points[0].normalImpulse, constraint.points[0].tangentImpulse},
-        PointImpulses{constraint.points[1].normalImpulse, constraint.points[1].tangentImpulse}};
-    solveNormals(constraint, a, b, useBias);
-    if (!useBias || !frictionInRelax) solveFriction(constraint, a, b);
-    for (int i = 0; i < constraint.pointCount; ++i) {
-      const double change = constraint.points[i].normalImpulse - before[i].normal;
-      largestChange = std::max(largestChange, std::abs(change));
-    }
+    SubstepBody& bodyA = bodies_[constraint.bodyA];
+    SubstepBody& bodyB = bodies_[constraint.bodyB];
+    std::array<PointImpulses, 2> before;
+    if (context.observer) before = impulsesOf(constraint);
+    SolverBody a = bodyA;
+    SolverBody b = bodyB;
+    const double change = solveNormals(constraint, bodyA, bodyB, a, b, useBias);
+    largestChange = std::max(largestChange, change);
+    if (friction) solveFriction(constraint, a, b);
+    storeVelocities(a, bodyA);
+    storeVelocities(b, bodyB);
     if (context.observer) reportPoints(context, constraint, before, substep, useBias);
   }
   return largestChange;
+}
+
+// Each point's impulses, before a traced sweep changes them.
+std::array<SoftStepSolver::PointImpulses, 2> SoftStepSolver::impulsesOf(
+    const Constraint& constraint) {
+  return {PointImpulses{constraint.points[0].normalImpulse, constraint.points[0].tangentImpulse},
+          PointImpulses{constraint.points[1].normalImpulse, constraint.points[1].tangentImpulse}};
+}
+
+// The velocities a contact's solve changed, back into its body.
+void SoftStepSolver::storeVelocities(const SolverBody& solved, SubstepBody& body) {
+  body.velocity = solved.velocity;
+  body.angularVelocity = solved.angularVelocity;
 }
 
 // A traced sweep tells one event per point of the manifold just solved: the impulses it changed
@@ -395,26 +377,32 @@ void SoftStepSolver::moveBody(const SubstepBody& moved, Body& body) {
 // circle's with its centre alone (roundSurfaces), every other turned with its body. A gap
 // (s > 0) may close within the substep and no further; an overlap is pushed out at the soft bias
 // rate, never faster than maxPushVelocity.
-SoftStepSolver::NormalRow SoftStepSolver::normalRow(const Constraint& constraint,
-                                                    const ConstraintPoint& cp, const SubstepBody& a,
-                                                    const SubstepBody& b, bool useBias) const {
+inline SoftStepSolver::NormalRow SoftStepSolver::normalRow(const Constraint& constraint,
+                                                           const ConstraintPoint& cp,
+                                                           const SubstepBody& a,
+                                                           const SubstepBody& b,
+                                                           bool useBias) const {
   const Vec2 armA = constraint.turnArmA ? rotate(a.deltaCos, a.deltaSin, cp.armA) : cp.armA;
   const Vec2 armB = constraint.turnArmB ? rotate(b.deltaCos, b.deltaSin, cp.armB) : cp.armB;
   const Vec2 anchorsMoved = b.deltaPosition - a.deltaPosition + armB - armA;
   const double separation = cp.baseSeparation + anchorsMoved.dot(constraint.normal);
   if (separation > 0.0) return {separation * inverseSubstep_, 1.0, 0.0};
   if (!useBias) return {};
-  const Softness& soft = cp.softness;
+  const Softness& soft = constraint.softness;
   return {std::max(soft.biasRate * separation, -pushVelocity_), soft.massScale, soft.impulseScale};
 }
 
-void SoftStepSolver::solveNormals(Constraint& constraint, SubstepBody& a, SubstepBody& b,
-                                  bool useBias) {
+// The normal impulses of a contact, on the velocities `a` and `b` of its bodies, whose moves
+// since the step began are `movedA` and `movedB`. Returns the largest change of an impulse.
+inline double SoftStepSolver::solveNormals(Constraint& constraint, const SubstepBody& movedA,
+                                           const SubstepBody& movedB, SolverBody& a, SolverBody& b,
+                                           bool useBias) {
   const Vec2 normal = constraint.normal;
+  double largestChange = 0.0;
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[i];
-    const NormalRow row = normalRow(constraint, cp, a, b, useBias);
-    const double vn = relativeVelocity(a, b, cp.armA, cp.armB).dot(normal);
+    const NormalRow row = normalRow(constraint, cp, movedA, movedB, useBias);
+    const double vn = velocityAlong(a, b, normal, cp.normalArmA, cp.normalArmB);
     const double impulse =
         -cp.normalMass * row.massScale * (vn + row.bias) - row.impulseScale * cp.normalImpulse;
     const double total = std::max(cp.normalImpulse + impulse, 0.0);
@@ -422,22 +410,25 @@ void SoftStepSolver::solveNormals(Constraint& constraint, SubstepBody& a, Subste
     cp.wantedImpulse = impulse;
     cp.normalImpulse = total;
     cp.totalNormalImpulse += change;
-    applyPairImpulse(a, b, cp.armA, cp.armB, change * normal);
+    applyAlong(a, b, normal, cp.normalArmA, cp.normalArmB, change);
+    largestChange = std::max(largestChange, std::abs(change));
   }
+  return largestChange;
 }
 
 // Coulomb friction on each point's running total, bounded by μ times its normal impulse.
-void SoftStepSolver::solveFriction(Constraint& constraint, SubstepBody& a, SubstepBody& b) const {
+inline void SoftStepSolver::solveFriction(Constraint& constraint, SolverBody& a,
+                                          SolverBody& b) const {
   const Vec2 tangent = leftPerpendicular(constraint.normal);
   for (int i = 0; i < constraint.pointCount; ++i) {
     ConstraintPoint& cp = constraint.points[i];
-    const double vt = relativeVelocity(a, b, cp.armA, cp.armB).dot(tangent);
+    const double vt = velocityAlong(a, b, tangent, cp.tangentArmA, cp.tangentArmB);
     const double limit = constraint.friction * cp.normalImpulse;
     const double total = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -limit, limit);
     const double change = total - cp.tangentImpulse;
     cp.tangentImpulse = total;
     cp.totalTangentImpulse += change;
-    applyPairImpulse(a, b, cp.armA, cp.armB, change * tangent);
+    applyAlong(a, b, tangent, cp.tangentArmA, cp.tangentArmB, change);
   }
 }
 

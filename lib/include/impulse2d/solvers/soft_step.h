@@ -13,6 +13,7 @@
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/point_memory.h"
+#include "impulse2d/solvers/soft_step_recycling.h"
 #include "impulse2d/solvers/soft_step_settings.h"
 
 namespace impulse2d {
@@ -34,10 +35,11 @@ Softness makeSoftness(double hertz, double dampingRatio, double h);
 Softness rigidSoftness(double h);
 
 /// Box2D v3's soft step: substeps of soft contacts, relax, restitution (docs/soft-step.md).
-class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
+class SoftStepSolver : public ContactSolver {
  public:
   /// A solver with these settings.
-  explicit SoftStepSolver(const SoftStepSettings& settings) : settings_(settings) {}
+  explicit SoftStepSolver(const SoftStepSettings& settings)
+      : settings_(settings), recycling_(settings) {}
 
   std::string name() const override { return "soft_step"; }
   /// Finds the contacts (ahead, recycling what moved little), then the substeps move the bodies:
@@ -47,7 +49,9 @@ class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
   SolveReport lastReport() const override { return report_; }
   /// How soft step finds its contacts: every contact speculative (settings speculativeContacts,
   /// as Box2D v3), and its contact recycling.
-  ContactFinding contactFinding() const { return {settings_.speculativeContacts, this}; }
+  ContactFinding contactFinding() { return {settings_.speculativeContacts, &recycling_}; }
+  /// which manifolds are kept across steps, and how each was found
+  const ContactRecycling& recycling() const { return recycling_; }
 
   /// its settings
   const SoftStepSettings& settings() const { return settings_; }
@@ -69,6 +73,11 @@ class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
     Vec2 armB = Vec2::Zero();
     /// Separation minus (armB − armA)·n: adding (cB + rB − cA − rA)·n now gives the separation.
     double baseSeparation = 0.0;
+    /// The torque arms rA × n, rB × n, rA × t, rB × t, for the solves (fixed, as the arms are).
+    double normalArmA = 0.0;
+    double normalArmB = 0.0;
+    double tangentArmA = 0.0;
+    double tangentArmB = 0.0;
     double normalMass = 0.0;
     double tangentMass = 0.0;
     double normalImpulse = 0.0;
@@ -77,7 +86,6 @@ class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
     double totalTangentImpulse = 0.0;  ///< all friction impulse applied this step
     double relativeVelocity = 0.0;     ///< vn before the step, for restitution
     double wantedImpulse = 0.0;        ///< the last normal solve's impulse before clamping
-    Softness softness;                 ///< this point's spring
   };
   struct Constraint : SolverManifold {
     /// The arms that turn with their bodies within the step: not a circle's (roundSurfaces).
@@ -85,6 +93,7 @@ class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
     bool turnArmB = true;
     /// Normal and arms taken from where round surfaces will touch (speculativeAtTouch).
     bool atTouch = false;
+    Softness softness;  ///< the spring of its points
     std::array<ConstraintPoint, 2> points;
   };
   /// A point's normal and friction impulses.
@@ -110,20 +119,16 @@ class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
     double impulseScale = 0.0;
   };
 
-  /// Contact recycling (Box2D v3): last substep's manifold of a pair that moved little since it
-  /// was found is kept, its normal and arms as found and only its overlap updated.
-  bool keep(const Manifold& previous, const std::vector<Body>& bodies,
-            Manifold& kept) const override;
   /// The substeps, restitution and the impulses stored; moves the bodies.
   void solveSubsteps(const StepContext& context);
   void prepareBodies(const StepContext& context, double h);
   void prepareConstraints(const StepContext& context, double h);
-  void placePoint(const Manifold& manifold, const ContactPoint& point, const Body& bodyA,
-                  const Body& bodyB, const LastSubstepImpulses& warmStart,
+  void placePoint(const Manifold& manifold, const ContactPoint& point, const FoundPoint& found,
+                  const Body& bodyA, const Body& bodyB, const LastSubstepImpulses& warmStart,
                   ConstraintPoint& cp) const;
   void placeAtTouch(const StepContext& context, Constraint& constraint) const;
   void prepareMasses(Constraint& constraint) const;
-  Softness pointSoftness(double hertz, double h) const;
+  Softness contactSoftness(double hertz, double h) const;
   void integrateVelocities();
   void warmStart();
   double solve(const StepContext& context, bool useBias, int substep);
@@ -132,10 +137,13 @@ class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
   void reportVelocitiesChanged(const StepContext& context);
   void updateTracedState(const StepContext& context);
   static void moveBody(const SubstepBody& moved, Body& body);
-  void solveNormals(Constraint& constraint, SubstepBody& a, SubstepBody& b, bool useBias);
+  static std::array<PointImpulses, 2> impulsesOf(const Constraint& constraint);
+  static void storeVelocities(const SolverBody& solved, SubstepBody& body);
+  double solveNormals(Constraint& constraint, const SubstepBody& movedA, const SubstepBody& movedB,
+                      SolverBody& a, SolverBody& b, bool useBias);
   NormalRow normalRow(const Constraint& constraint, const ConstraintPoint& cp, const SubstepBody& a,
                       const SubstepBody& b, bool useBias) const;
-  void solveFriction(Constraint& constraint, SubstepBody& a, SubstepBody& b) const;
+  void solveFriction(Constraint& constraint, SolverBody& a, SolverBody& b) const;
   void integratePositions(double h);
   void applyRestitution(const StepContext& context);
   BounceStart bounceStart(const Constraint& constraint, const SubstepBody& a,
@@ -153,6 +161,7 @@ class SoftStepSolver : public ContactSolver, private ManifoldKeeping {
   void finishBodies(const StepContext& context, double h) const;
 
   SoftStepSettings settings_;
+  ContactRecycling recycling_;
   std::vector<SubstepBody> bodies_;
   std::vector<Constraint> constraints_;
   PointMemory<LastSubstepImpulses> lastSubstep_;
