@@ -131,8 +131,8 @@ class SequentialImpulseSolver : public ContactSolver {
   double tangentImpulseChange(PointState& point, double impulse, double friction,
                               double normalImpulseThisSweep) const;
   void storeResults(const StepContext& context) const;
-  void reportPoint(const StepContext& context, const ManifoldState& manifold,
-                   const BodyPair& bodies, int sweep, int point, const PointImpulse& impulse);
+  void reportPoints(const StepContext& context, const ManifoldState& manifold, int sweep,
+                    const std::array<PointImpulse, 2>& impulses) const;
 
   SequentialImpulseSettings settings_;
   std::vector<SolverBody> solverBodies_;
