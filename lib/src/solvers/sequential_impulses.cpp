@@ -126,8 +126,8 @@ void SequentialImpulseSolver::warmStart() {
 // One contact in one sweep: the normal impulses of its points (together, or one at a time), then
 // friction at each point. Returns the largest impulse change (normal or friction), the sweep's
 // residual.
-double SequentialImpulseSolver::solveManifold(const StepContext& context,
-                                              const ManifoldState& manifold, int sweep) {
+inline double SequentialImpulseSolver::solveManifold(const StepContext& context,
+                                                     const ManifoldState& manifold, int sweep) {
   std::array<PointImpulse, 2> impulses;
   BodyPair bodies = loadBodies(manifold);
   if (settings_.frictionFirst) solveFrictions(manifold, bodies, impulses);
