@@ -485,7 +485,7 @@ int printCallgrindTable(bool quick) {
 /// no symbols for its island and contact solvers, so its solve stays one stage (b2World::Solve:
 /// preparing, both solves and the integration; the broad phase it ends with is finding contacts).
 const std::vector<std::string> kStages = {"finding contacts", "preparing", "solving velocities",
-                                          "solving positions", "solving, not split"};
+                                          "solving positions", "solving (not split)"};
 
 /// Where a method spends a step: for each stage of kStages, the functions whose inclusive costs
 /// add up to it ("-" before a name: subtracted, a stage nested in another's function). What the
