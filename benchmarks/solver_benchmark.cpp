@@ -14,6 +14,13 @@
 //                                (b2World::Step alone, and through the adapter) on stack10,
 //                                pyramid20, pyramid40 and rain, each run under valgrind in turn
 //                                and read with callgrind_annotate
+//   solver_benchmark --cost-split [--quick] CSV  each method's and Box2D's instructions per step
+//                                on pyramid20, pyramid40 and rain, split into finding contacts,
+//                                preparing, solving velocities, solving positions and the rest:
+//                                a Markdown table, and CSV for docs/charts/cost_split.gp
+//   solver_benchmark --sweeps SCENE  sequential impulses stopping once converged, capped at 40,
+//                                160 and 640 sweeps: the mean sweeps per step in each second
+//                                of the run, and how many steps reach the cap
 //   solver_benchmark --callgrind SCENE SOLVER ITERATIONS WARMUP STEPS
 //                                runs WARMUP steps of the shipped SCENE with SOLVER at ITERATIONS
 //                                (0: its default), then STEPS steps inside measuredSteps(), for
@@ -30,6 +37,8 @@
 #include <unistd.h>
 
 #include "impulse2d/box2d/box2d_simulation.h"
+#include "impulse2d/scene/scene_file.h"
+#include "impulse2d/world.h"
 #include "measures/analytic_checks.h"
 #include "measures/benchmark_scenes.h"
 #include "measures/measured_run.h"
@@ -387,34 +396,51 @@ std::vector<CallgrindRow> callgrindRows(bool quick) {
   return rows;
 }
 
-/// The instructions callgrind counted in its output file: all of them, or the inclusive cost of
-/// the function named `counted` (read with callgrind_annotate); -1 if there is no such figure.
-long long countedInstructions(const std::string& output, const std::string& counted) {
-  const std::string command = "callgrind_annotate --inclusive=yes " + output + " 2>/dev/null";
+/// Every function callgrind counted, as callgrind_annotate names it ("PROGRAM TOTALS" for the
+/// whole), with its inclusive instructions.
+using InclusiveCosts = std::vector<std::pair<std::string, long long>>;
+
+/// The inclusive cost of each function in callgrind's output file (read with callgrind_annotate);
+/// empty if it could not be read.
+InclusiveCosts inclusiveCosts(const std::string& output) {
+  const std::string command =
+      "callgrind_annotate --inclusive=yes --threshold=100 " + output + " 2>/dev/null";
   FILE* annotation = popen(command.c_str(), "r");
-  if (!annotation) return -1;
-  const std::string wanted = counted.empty() ? "PROGRAM TOTALS" : counted;
-  long long total = -1;
+  if (!annotation) return {};
+  InclusiveCosts costs;
   char line[4096];
-  while (total < 0 && std::fgets(line, sizeof line, annotation)) {
+  while (std::fgets(line, sizeof line, annotation)) {
     const std::string text = line;
-    if (text.find(wanted) == std::string::npos) continue;
+    const size_t start = text.find_first_not_of(' ');
+    if (start == std::string::npos || !std::isdigit(static_cast<unsigned char>(text[start]))) {
+      continue;
+    }
+    const size_t end = text.find(' ', start);
     std::string digits;
-    for (char c : text.substr(0, text.find(' ', text.find_first_not_of(' ')))) {
+    for (char c : text.substr(start, end - start)) {
       if (std::isdigit(static_cast<unsigned char>(c))) digits += c;
     }
-    if (!digits.empty()) total = std::atoll(digits.c_str());
+    costs.emplace_back(text.substr(end), std::atoll(digits.c_str()));
   }
   pclose(annotation);
-  return total;
+  return costs;
 }
 
-/// Runs this program's --callgrind mode for the row under callgrind and returns the
-/// instructions it counted, or -1 if valgrind did not run.
-long long countInstructions(const CallgrindRow& row) {
+/// The cost of the first function whose name contains `name` ("" for the whole); -1 if none.
+long long costOf(const InclusiveCosts& costs, const std::string& name) {
+  const std::string wanted = name.empty() ? "PROGRAM TOTALS" : name;
+  for (const auto& [function, cost] : costs) {
+    if (function.find(wanted) != std::string::npos) return cost;
+  }
+  return -1;
+}
+
+/// Runs this program's --callgrind mode for the row under callgrind and returns the inclusive
+/// cost of every function in the measured steps, or nothing if valgrind did not run.
+InclusiveCosts measuredCosts(const CallgrindRow& row) {
   char output[] = "/tmp/solver_benchmark_callgrind_XXXXXX";
   const int file = mkstemp(output);
-  if (file < 0) return -1;
+  if (file < 0) return {};
   close(file);
   const std::string command =
       "valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*measuredSteps*' "
@@ -422,10 +448,15 @@ long long countInstructions(const CallgrindRow& row) {
       std::string(output) + " /proc/" + std::to_string(getpid()) + "/exe --callgrind " + row.scene +
       " " + row.solver + " " + std::to_string(row.iterations) + " " + std::to_string(row.warmup) +
       " " + std::to_string(row.steps) + " >/dev/null 2>&1";
-  const long long total =
-      std::system(command.c_str()) == 0 ? countedInstructions(output, row.counted) : -1;
+  const InclusiveCosts costs =
+      std::system(command.c_str()) == 0 ? inclusiveCosts(output) : InclusiveCosts{};
   std::remove(output);
-  return total;
+  return costs;
+}
+
+/// The instructions callgrind counted for the row, or -1 if valgrind did not run.
+long long countInstructions(const CallgrindRow& row) {
+  return costOf(measuredCosts(row), row.counted);
 }
 
 /// Instructions per step of every method and of Box2D, each run under callgrind in turn.
@@ -450,6 +481,181 @@ int printCallgrindTable(bool quick) {
   return 0;
 }
 
+/// The stages a step's cost is split into (the chart's legend, in order). Debian's Box2D exports
+/// no symbols for its island and contact solvers, so its solve stays one stage (b2World::Solve:
+/// preparing, both solves and the integration; the broad phase it ends with is finding contacts).
+const std::vector<std::string> kStages = {"finding contacts", "preparing", "solving velocities",
+                                          "solving positions", "solving (not split)"};
+
+/// Where a method spends a step: for each stage of kStages, the functions whose inclusive costs
+/// add up to it ("-" before a name: subtracted, a stage nested in another's function). What the
+/// named functions leave of the whole step is "the rest" (integration, sleeping, storing).
+struct StageFunctions {
+  std::string label;
+  std::string solver;
+  std::string whole;  ///< the function that is the whole step; empty: all of measuredSteps()
+  std::vector<std::vector<std::string>> stages;
+};
+
+const std::vector<StageFunctions> kStageFunctions = {
+    {"Box2D 2.4.1 (8+3)",
+     "box2d",
+     kBox2dStep,
+     {{"b2ContactManager::Collide(", "b2ContactManager::FindNewContacts("},
+      {},
+      {},
+      {},
+      {"b2World::Solve(", "-b2ContactManager::FindNewContacts("}}},
+    {"sequential (default)",
+     "sequential",
+     kMeasuredSteps,
+     {{"World::findContacts("},
+      {"SequentialImpulseSolver::prepare("},
+      {"SequentialImpulseSolver::solveVelocities(", "-SequentialImpulseSolver::prepare("},
+      {"impulse2d::correctPositions("},
+      {}}},
+    {"soft step (default)",
+     "soft_step",
+     kMeasuredSteps,
+     {{"World::findContacts("},
+      {"SoftStepSolver::prepareBodies(", "SoftStepSolver::prepareConstraints("},
+      {"SoftStepSolver::warmStart(", "SoftStepSolver::solve(", "SoftStepSolver::applyRestitution("},
+      {},
+      {}}},
+    {"micro (default)",
+     "micro",
+     kMeasuredSteps,
+     {{"World::findContacts("},
+      {"MicroCollisionSolver::prepare("},
+      {"MicroCollisionSolver::solveVelocities(", "-MicroCollisionSolver::prepare("},
+      {"MicroCollisionSolver::solvePositions("},
+      {}}},
+};
+
+/// One stage's instructions: its functions' inclusive costs added (or subtracted). A function
+/// callgrind did not count (inlined, renamed) is reported and counts as nothing.
+long long stageCost(const InclusiveCosts& costs, const std::vector<std::string>& functions,
+                    const std::string& where) {
+  long long total = 0;
+  for (const std::string& term : functions) {
+    const bool subtract = term[0] == '-';
+    const std::string name = subtract ? term.substr(1) : term;
+    const long long cost = costOf(costs, name);
+    if (cost < 0) {
+      std::fprintf(stderr, "solver_benchmark: %s: no cost counted for %s\n", where.c_str(),
+                   name.c_str());
+      continue;
+    }
+    total += subtract ? -cost : cost;
+  }
+  return total;
+}
+
+/// Each method's instructions per step split into the stages of kStages and the rest, on the
+/// scenes of the instruction table (micro not on rain): a Markdown table, and the same figures
+/// in millions as CSV (scene, method, stages..., rest) for docs/charts/cost_split.gp.
+int printCostSplit(bool quick, const std::string& csvPath) {
+  if (std::system("valgrind --version >/dev/null 2>&1") != 0) {
+    std::printf("valgrind is not installed: no cost split.\n");
+    return 0;
+  }
+  FILE* csv = std::fopen(csvPath.c_str(), "w");
+  if (!csv) {
+    std::fprintf(stderr, "solver_benchmark: cannot write %s\n", csvPath.c_str());
+    return 1;
+  }
+  std::fprintf(csv, "scene,method");
+  std::printf("| scene | method | instructions per step |");
+  for (const std::string& stage : kStages) {
+    std::fprintf(csv, ",%s", stage.c_str());
+    std::printf(" %s |", stage.c_str());
+  }
+  std::fprintf(csv, ",the rest\n");
+  std::printf(" the rest |\n| --- | --- | --- |");
+  for (size_t i = 0; i <= kStages.size(); ++i) std::printf(" --- |");
+  std::printf("\n");
+  for (const CallgrindRow& row : callgrindRows(quick)) {
+    const bool box2dThroughAdapter = row.solver == "box2d" && row.counted == kMeasuredSteps;
+    if (row.scene == "stack10" || box2dThroughAdapter) continue;
+    const auto method = std::find_if(
+        kStageFunctions.begin(), kStageFunctions.end(), [&row](const StageFunctions& method) {
+          return method.solver == row.solver && (row.solver == "box2d" || row.iterations == 0);
+        });
+    if (method == kStageFunctions.end()) continue;
+    const InclusiveCosts costs = measuredCosts(row);
+    const long long whole = costOf(costs, method->whole);
+    if (whole < 0) {
+      std::fprintf(stderr, "solver_benchmark: callgrind failed on %s %s\n", row.scene.c_str(),
+                   row.label.c_str());
+      std::fclose(csv);
+      return 1;
+    }
+    const std::string where = row.scene + " " + method->label;
+    std::fprintf(csv, "%s,%s", row.scene.c_str(), method->label.c_str());
+    std::printf("| %s | %s | %lld |", row.scene.c_str(), method->label.c_str(), whole / row.steps);
+    long long rest = whole;
+    for (const std::vector<std::string>& functions : method->stages) {
+      const long long cost = stageCost(costs, functions, where);
+      rest -= cost;
+      std::fprintf(csv, ",%.4f", 1e-6 * cost / row.steps);
+      std::printf(" %lld (%.0f%%) |", cost / row.steps, 100.0 * cost / whole);
+    }
+    std::fprintf(csv, ",%.4f\n", 1e-6 * rest / row.steps);
+    std::printf(" %lld (%.0f%%) |\n", rest / row.steps, 100.0 * rest / whole);
+    std::fflush(stdout);
+  }
+  std::fclose(csv);
+  return 0;
+}
+
+/// The caps of --sweeps: the default, and four and sixteen times it.
+const std::vector<int> kSweepCaps = {40, 160, 640};
+
+/// Sweeps made in each step of the scene by sequential impulses at their defaults but for the
+/// cap (the convergence test kept).
+std::vector<int> sweepsPerStep(const std::string& sceneName, int cap) {
+  Scene scene = withMethod(shippedScene(sceneName), "sequential", 0);
+  applySetting(scene, "solver." + iterationKey("sequential") + "=" + std::to_string(cap));
+  std::unique_ptr<Simulation> simulation = makeSimulation(scene);
+  World& world = dynamic_cast<World&>(*simulation);
+  std::vector<int> sweeps;
+  for (long step = 0; step < scene.steps; ++step) {
+    simulation->step();
+    sweeps.push_back(world.solver().lastReport().iterations);
+  }
+  return sweeps;
+}
+
+/// How many sweeps the scene's steps need: per second of the run, the mean sweeps per step and
+/// the steps that reach the cap, for each cap of kSweepCaps.
+int printSweepsPerStep(const std::string& sceneName) {
+  const Scene scene = shippedScene(sceneName);
+  const long stepsPerSecond = std::lround(1.0 / scene.world.dt);
+  std::vector<std::vector<int>> runs;
+  for (int cap : kSweepCaps) runs.push_back(sweepsPerStep(sceneName, cap));
+  std::printf("| %s, seconds |", sceneName.c_str());
+  for (int cap : kSweepCaps) std::printf(" cap %d: mean sweeps, steps at the cap |", cap);
+  std::printf("\n| --- |");
+  for (size_t i = 0; i < kSweepCaps.size(); ++i) std::printf(" --- |");
+  std::printf("\n");
+  for (long first = 0; first < scene.steps; first += stepsPerSecond) {
+    const long last = std::min<long>(first + stepsPerSecond, scene.steps);
+    std::printf("| %.0f–%.0f |", first * scene.world.dt, last * scene.world.dt);
+    for (size_t c = 0; c < kSweepCaps.size(); ++c) {
+      long total = 0;
+      long atCap = 0;
+      for (long step = first; step < last; ++step) {
+        total += runs[c][step];
+        atCap += runs[c][step] >= kSweepCaps[c];
+      }
+      std::printf(" %.1f, %ld of %ld |", static_cast<double>(total) / (last - first), atCap,
+                  last - first);
+    }
+    std::printf("\n");
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -458,6 +664,10 @@ int main(int argc, char** argv) {
   if (mode == "--callgrind" && argc <= 3) {
     return printCallgrindTable(argc == 3 && std::string(argv[2]) == "--quick");
   }
+  if (mode == "--cost-split" && (argc == 3 || (argc == 4 && std::string(argv[2]) == "--quick"))) {
+    return printCostSplit(argc == 4, argv[argc - 1]);
+  }
+  if (mode == "--sweeps" && argc == 3) return printSweepsPerStep(argv[2]);
   if (mode == "--speed") {
     const std::vector<std::string> only(argv + 2, argv + argc);
     printSpeedTable(only.empty() ? std::vector<std::string>{"pyramid20", "pyramid40", "rain"}
@@ -467,7 +677,8 @@ int main(int argc, char** argv) {
   if (!mode.empty() && mode != "--quick") {
     std::fprintf(stderr,
                  "usage: solver_benchmark [--quick | --speed [SCENE...] | --callgrind [--quick] | "
-                 "--callgrind SCENE SOLVER ITERATIONS WARMUP STEPS]\n");
+                 "--cost-split [--quick] CSV | --sweeps SCENE | --callgrind SCENE SOLVER "
+                 "ITERATIONS WARMUP STEPS]\n");
     return 2;
   }
   const Length length{mode == "--quick"};

@@ -119,28 +119,27 @@ void SequentialImpulseSolver::warmStart() {
 // One contact in one sweep: the normal impulses of its points (together, or one at a time), then
 // friction at each point. Returns the largest impulse change (normal or friction), the sweep's
 // residual.
-double SequentialImpulseSolver::solveManifold(const StepContext& context,
-                                              const ManifoldState& manifold, int sweep) {
+inline double SequentialImpulseSolver::solveManifold(const StepContext& context,
+                                                     const ManifoldState& manifold, int sweep) {
   std::array<PointImpulse, 2> impulses;
-  PointState* points = &states_[manifold.firstPoint];
   BodyPair bodies = loadBodies(manifold);
   if (settings_.frictionFirst) solveFrictions(manifold, bodies, impulses);
   if (manifold.block) {
     solveNormalsTogether(manifold, bodies, impulses);
   } else {
+    PointState* points = &states_[manifold.firstPoint];
     for (int i = 0; i < manifold.pointCount; ++i) {
       solveNormal(manifold, points[i], bodies, impulses[i]);
     }
   }
   if (!settings_.frictionFirst) solveFrictions(manifold, bodies, impulses);
+  storeBodies(manifold, bodies);
+  if (context.observer) reportPoints(context, manifold, sweep, impulses);
   double largestChange = 0.0;
   for (int i = 0; i < manifold.pointCount; ++i) {
-    const PointImpulse& impulse = impulses[i];
     largestChange = std::max(
-        {largestChange, std::abs(impulse.normalImpulse), std::abs(impulse.tangentImpulse)});
-    reportPoint(context, manifold, bodies, sweep, i, impulse);
+        {largestChange, std::abs(impulses[i].normalImpulse), std::abs(impulses[i].tangentImpulse)});
   }
-  storeBodies(manifold, bodies);
   return largestChange;
 }
 
@@ -253,16 +252,18 @@ void SequentialImpulseSolver::storeResults(const StepContext& context) const {
   }
 }
 
-// A traced step shows the bodies and manifolds as they are after each point's solve, so the
-// results are stored before each report; an untraced step stores them once, after the sweeps.
-void SequentialImpulseSolver::reportPoint(const StepContext& context, const ManifoldState& manifold,
-                                          const BodyPair& bodies, int sweep, int point,
-                                          const PointImpulse& impulse) {
-  if (context.observer == nullptr) return;
-  storeBodies(manifold, bodies);
+// A traced step shows the bodies and manifolds as they are after the contact's solve, so the
+// results are stored before its points are reported; an untraced step stores them once, after
+// the sweeps.
+void SequentialImpulseSolver::reportPoints(const StepContext& context,
+                                           const ManifoldState& manifold, int sweep,
+                                           const std::array<PointImpulse, 2>& impulses) const {
   storeResults(context);
-  context.report({SolverEvent::Phase::Velocity, sweep, manifold.manifold, point,
-                  impulse.desiredChange, impulse.normalImpulse, impulse.tangentImpulse});
+  for (int i = 0; i < manifold.pointCount; ++i) {
+    const PointImpulse& impulse = impulses[i];
+    context.report({SolverEvent::Phase::Velocity, sweep, manifold.manifold, i,
+                    impulse.desiredChange, impulse.normalImpulse, impulse.tangentImpulse});
+  }
 }
 
 void SequentialImpulseSolver::solvePositions(const StepContext& context) {

@@ -123,16 +123,21 @@ class SequentialImpulseSolver : public ContactSolver {
   BodyPair loadBodies(const ManifoldState& manifold) const {
     return {solverBodies_[manifold.bodyA], solverBodies_[manifold.bodyB]};
   }
+  /// Only the velocities go back: the masses never change within a step.
   void storeBodies(const ManifoldState& manifold, const BodyPair& bodies) {
-    solverBodies_[manifold.bodyA] = bodies.a;
-    solverBodies_[manifold.bodyB] = bodies.b;
+    storeVelocities(bodies.a, solverBodies_[manifold.bodyA]);
+    storeVelocities(bodies.b, solverBodies_[manifold.bodyB]);
+  }
+  static void storeVelocities(const SolverBody& from, SolverBody& to) {
+    to.velocity = from.velocity;
+    to.angularVelocity = from.angularVelocity;
   }
   double normalImpulseChange(PointState& point, double impulse) const;
   double tangentImpulseChange(PointState& point, double impulse, double friction,
                               double normalImpulseThisSweep) const;
   void storeResults(const StepContext& context) const;
-  void reportPoint(const StepContext& context, const ManifoldState& manifold,
-                   const BodyPair& bodies, int sweep, int point, const PointImpulse& impulse);
+  void reportPoints(const StepContext& context, const ManifoldState& manifold, int sweep,
+                    const std::array<PointImpulse, 2>& impulses) const;
 
   SequentialImpulseSettings settings_;
   std::vector<SolverBody> solverBodies_;
