@@ -417,7 +417,9 @@ int answeredLikeLemke(int piles, bool enterSliding) {
                              std::abs(one.angularVelocity - other.angularVelocity)});
     }
     INFO("pile " << pile << ", enter_sliding " << enterSliding);
-    CHECK(difference < 1e-9);
+    // Each answer meets the conditions to kResidual; a body touching several points sums
+    // several such errors, and a compiler's rounding may put them either way.
+    CHECK(difference < 10 * kResidual);
   }
   return answered;
 }

@@ -55,7 +55,7 @@ struct WorldSettings {
   bool keepSpeedingUpAwake = true;
   /// The share of sleepLinearSpeed (sleepAngularSpeed) by which a resting body's speed (spin) may
   /// grow before it counts as speeding up: 1 mm/s and 0.2°/s. A settled pile's bodies jitter up
-  /// by at most half of that (4.7e-4 m/s measured on a 10-box stack under micro).
+  /// by less than half of that (docs/design/sleeping-while-speeding-up.md).
   double speedUpShare = 0.1;
 };
 

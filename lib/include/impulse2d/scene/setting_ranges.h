@@ -1,6 +1,6 @@
 // The valid range of every numeric setting a scene file or a --set may give, as each setting's
-// declaration states it (settings.h), so a value outside it is refused where it is written. Upper bounds on counts
-// (substeps, caps, iterations) keep a run from taking hours or exhausting memory.
+// declaration states it (settings.h), so a value outside it is refused where it is written. Upper
+// bounds on counts (substeps, caps, iterations) keep a run from taking hours or exhausting memory.
 #pragma once
 
 #include <optional>

@@ -54,8 +54,8 @@ struct ActiveSetSettings {
   /// (λt = ∓μλn), as a contact that starts while slipping does, instead of sticking; a slide
   /// the next answer reverses makes it stick. Forcing such a point to stick can contradict other
   /// states on dependent rows (a regularized self-stress of 1/r's size, flips that undo each
-  /// other): of 100 random piles of 8 boxes thrown together, the active set alone answers the
-  /// first step of 97 with it and 89 without; of 40 piles of 18 boxes, 30 and 20.
+  /// other), so more random piles are answered by the active set alone with it on
+  /// (docs/design/reference-active-set.md).
   bool enterSliding = true;
   /// Tikhonov term on each velocity row, relative to its Delassus diagonal: it makes the system
   /// of redundant contacts (a box face's two points, a pyramid) regular. The shift of the
@@ -87,10 +87,10 @@ struct ActiveSetSettings {
   int keptRounds = 8;
   /// Solves with kept factors beyond a system's first solve and first correction (GMRES
   /// rounds, further corrections), summed since the factors were made, after which the next
-  /// system is factorized afresh. A factorization of a 40-row pyramid's system costs about 44
-  /// solves (35 ms against 0.79 ms), so a pile whose kept factors have drifted from it pays at
-  /// most about twice what a factorization at the right moment would cost, and one that rests
-  /// on them pays nothing more.
+  /// system is factorized afresh. A large pile's factorization costs about as much as this many
+  /// solves on kept factors (docs/design/reference-active-set.md), so a pile whose kept factors
+  /// have drifted from it pays at most about twice what a factorization at the right moment
+  /// would cost, and one that rests on them pays nothing more.
   int refactorAfterSolves = 40;
   /// A solve on kept factors is done once the residual of A x = b is below this fraction of
   /// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.
