@@ -34,9 +34,9 @@ struct FoundPoint {
 /// A pair's manifold as it was found: its bodies' pose then and its points' arms. A recycled
 /// manifold keeps the one it was found with.
 struct FoundManifold {
-  int bodyA = -1;  ///< index into the world's bodies
-  int bodyB = -1;  ///< index into the world's bodies
-  FoundPose pose;
+  int bodyA = -1;                    ///< index into the world's bodies
+  int bodyB = -1;                    ///< index into the world's bodies
+  FoundPose pose;                    ///< the bodies' pose when the points were found
   std::array<FoundPoint, 2> points;  ///< in the manifold's order
 };
 
