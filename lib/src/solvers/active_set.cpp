@@ -778,7 +778,7 @@ std::vector<Violation> violationsOfAnswer(const IslandProblem& problem,
 }
 
 /// The answer so far, failed for `reason`.
-ActiveSetAnswer failed(ActiveSetAnswer answer, const std::string& reason) {
+ActiveSetAnswer failedAnswer(ActiveSetAnswer answer, const std::string& reason) {
   answer.failure = reason;
   return answer;
 }
@@ -808,7 +808,7 @@ ActiveSetAnswer flipUntilSolved(const IslandProblem& problem, const Eigen::Vecto
   bool firstSystem = true;
   while (answer.factorizations < settings.maxFactorizations) {
     if (visited.cycles(states)) {
-      return failed(answer, "active set: cycling (the same states solved " +
+      return failedAnswer(answer, "active set: cycling (the same states solved " +
                                 std::to_string(kVisitsBeforeCycling + 1) +
                                 " times by factorization " + std::to_string(answer.factorizations) +
                                 ")");
@@ -819,7 +819,7 @@ ActiveSetAnswer flipUntilSolved(const IslandProblem& problem, const Eigen::Vecto
     firstSystem = false;
     answer.factorizations = kept.factorizations() - factorizationsBefore;
     if (!impulses) {
-      return failed(answer, "active set: singular system at factorization " +
+      return failedAnswer(answer, "active set: singular system at factorization " +
                                 std::to_string(answer.factorizations) + " (" + kept.lastError() +
                                 ")");
     }
@@ -829,7 +829,7 @@ ActiveSetAnswer flipUntilSolved(const IslandProblem& problem, const Eigen::Vecto
     if (found.empty()) return solved(answer, states);
     flips.apply(found, states);
   }
-  return failed(answer, "active set: factorization limit of " +
+  return failedAnswer(answer, "active set: factorization limit of " +
                             std::to_string(settings.maxFactorizations) + " reached");
 }
 
@@ -840,7 +840,7 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
   const Eigen::VectorXd diagonal = delassusDiagonal(problem);
   const Eigen::VectorXd free = freeVelocity(problem);
   if (!free.allFinite() || !diagonal.allFinite()) {
-    return failed({}, "active set: the problem is not finite (a velocity or mass overflowed)");
+    return failedAnswer({}, "active set: the problem is not finite (a velocity or mass overflowed)");
   }
   return flipUntilSolved(problem, free, diagonal, firstGuess(problem, free, diagonal, settings),
                          settings, kept);
