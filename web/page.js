@@ -24,47 +24,36 @@ window.sandboxPage = page;
 const FILL = 0, STROKE = 1, TEXT = 2, SAVE = 3, TRANSLATE = 4, CLIP = 5, RESTORE = 6;
 
 const rgba = (n, i) => `rgba(${n[i]},${n[i + 1]},${n[i + 2]},${n[i + 3] / 255})`;
+const fonts = new Map();
+const fontOf = (size) => {
+  if (!fonts.has(size)) fonts.set(size, `${size}px "DejaVu Sans"`);
+  return fonts.get(size);
+};
 
-/// Paints the frame's marks (web/sandbox.cpp encodeMarks) as Cairo paints them for the PNGs.
+/// Paints the frame's marks (web/mark_encoding.h) as Cairo paints them for the PNGs: each fill
+/// or stroke is one Path2D made from its SVG path data (a Path2D built call by call, or a path
+/// per outline, costs several times as much for a pyramid's thousands of outlines).
+const pathText = new TextDecoder();
 function paintMarks(context, marks) {
-  const n = marks.numbers;
-  let i = 0, text = 0;
+  const n = marks.numbers, paths = pathText.decode(marks.paths).split("|");
+  let i = 0, path = 0, text = 0;
   context.lineJoin = "miter";
   context.lineCap = "butt";
   context.textBaseline = "alphabetic";
   while (i < n.length) {
     const kind = n[i++];
-    if (kind === FILL || kind === STROKE) {
-      const count = n[i + 5];
-      if (kind === FILL) context.fillStyle = rgba(n, i);
-      else context.strokeStyle = rgba(n, i);
+    if (kind === FILL) {
+      context.fillStyle = rgba(n, i);
+      context.fill(new Path2D(paths[path++]));
+      i += 5;
+    } else if (kind === STROKE) {
+      context.strokeStyle = rgba(n, i);
       context.lineWidth = n[i + 4];
-      i += 6;
-      // One path per outline where a mark has many: the canvas paints a thousand small paths far
-      // faster than one path of a thousand parts, and the marks of one colour look the same.
-      const apart = count > 32;
-      context.beginPath();
-      for (let k = 0; k < count; ++k) {
-        const radius = n[i], closed = n[i + 1], points = n[i + 2];
-        i += 3;
-        if (apart) context.beginPath();
-        if (radius > 0) {
-          context.moveTo(n[i] + radius, n[i + 1]);
-          context.arc(n[i], n[i + 1], radius, 0, 2 * Math.PI);
-        } else {
-          context.moveTo(n[i], n[i + 1]);
-          for (let p = 1; p < points; ++p) context.lineTo(n[i + 2 * p], n[i + 2 * p + 1]);
-          if (closed) context.closePath();
-        }
-        i += 2 * points;
-        if (apart || k === count - 1) {
-          if (kind === FILL) context.fill();
-          else context.stroke();
-        }
-      }
+      context.stroke(new Path2D(paths[path++]));
+      i += 5;
     } else if (kind === TEXT) {
       context.fillStyle = rgba(n, i);
-      context.font = `${n[i + 4]}px "DejaVu Sans"`;
+      context.font = fontOf(n[i + 4]);
       context.fillText(marks.texts[text++], n[i + 5], n[i + 6]);
       i += 7;
     } else if (kind === SAVE) {
@@ -85,7 +74,7 @@ function paintMarks(context, marks) {
 
 const measuring = document.createElement("canvas").getContext("2d");
 function measureText(text, size) {
-  measuring.font = `${size}px "DejaVu Sans"`;
+  measuring.font = fontOf(size);
   return measuring.measureText(text).width;
 }
 

@@ -1,5 +1,5 @@
 // The browser sandbox's entry: the library's scene loader, world and frame drawing behind one
-// embind class. The page (web/sandbox.js) gives it a scene's text and the command line's
+// embind class. The page (web/page.js) gives it a scene's text and the command line's
 // overrides, steps it, and paints the frame's marks (render/marks.h) on its canvas.
 #include <emscripten.h>
 #include <emscripten/bind.h>
@@ -18,6 +18,7 @@
 #include "impulse2d/render/marks.h"
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/scene/setting_ranges.h"
+#include "mark_encoding.h"
 #include "run_figures.h"
 #include "scene_setup.h"
 
@@ -39,45 +40,23 @@ void appendNumber(std::string& line, double value) {
   line += buffer;
 }
 
-/// The marks as numbers the page reads in order (web/sandbox.js paintMarks) and the texts.
-val encodeMarks(const std::vector<render::Mark>& marks) {
-  std::vector<double> numbers;
+/// A copy of `values` as a new JavaScript typed array (`type`: "Float64Array", "Uint8Array").
+template <typename T>
+val typedArray(const char* type, const T* values, std::size_t count) {
+  return val::global(type).new_(val(emscripten::typed_memory_view(count, values)));
+}
+
+/// The marks as the page's paintMarks takes them (mark_encoding.h); the path data goes as bytes,
+/// which the page decodes in one call (embind's own string conversion reads them one by one).
+val marksForPage(const std::vector<render::Mark>& marks) {
+  const sandbox::EncodedMarks encoded = sandbox::encodeMarks(marks);
   val texts = val::array();
-  int textCount = 0;
-  for (const render::Mark& mark : marks) {
-    numbers.push_back(double(mark.kind));
-    const render::Color& c = mark.colour;
-    switch (mark.kind) {
-      case render::Mark::Kind::Fill:
-      case render::Mark::Kind::Stroke:
-        numbers.insert(numbers.end(), {double(c.r), double(c.g), double(c.b), double(c.a),
-                                       mark.size, double(mark.outlines.size())});
-        for (const render::Outline& outline : mark.outlines) {
-          numbers.insert(numbers.end(), {outline.radius, outline.closed ? 1.0 : 0.0,
-                                         double(outline.points.size())});
-          for (const impulse2d::Vec2& point : outline.points) {
-            numbers.insert(numbers.end(), {point.x(), point.y()});
-          }
-        }
-        break;
-      case render::Mark::Kind::Text:
-        numbers.insert(numbers.end(), {double(c.r), double(c.g), double(c.b), double(c.a),
-                                       mark.size, mark.at.x(), mark.at.y()});
-        texts.set(textCount++, mark.text);
-        break;
-      case render::Mark::Kind::Translate:
-      case render::Mark::Kind::Clip:
-        numbers.insert(numbers.end(), {mark.at.x(), mark.at.y()});
-        break;
-      case render::Mark::Kind::Save:
-      case render::Mark::Kind::Restore:
-        break;
-    }
-  }
+  for (std::size_t k = 0; k < encoded.texts.size(); ++k) texts.set(k, encoded.texts[k]);
   val result = val::object();
-  result.set("numbers",
-             val::global("Float64Array")
-                 .new_(val(emscripten::typed_memory_view(numbers.size(), numbers.data()))));
+  result.set("numbers", typedArray("Float64Array", encoded.numbers.data(), encoded.numbers.size()));
+  result.set("paths",
+             typedArray("Uint8Array", reinterpret_cast<const unsigned char*>(encoded.paths.data()),
+                        encoded.paths.size()));
   result.set("texts", texts);
   return result;
 }
@@ -254,7 +233,7 @@ class Sandbox {
       render::Drawing drawing(marks);
       renderer_->drawOnto(drawing, render::captureFrame(*simulation_, scene_.name, settings_));
     }
-    return encodeMarks(marks.marks());
+    return marksForPage(marks.marks());
   }
 
   /// The settings of [world] and of the solver's [solver] table, each with its range.
