@@ -14,6 +14,7 @@ const page = {
   compare: "",       // the side-by-side method, "" for none
   sets: [],          // "section.key=value", in order, as i2d --set takes them
   playing: false,
+  surveying: false,  // a run's survey (Sandbox::survey) has not reached its end yet
   history: [],       // the plots' figures, one per step
   error: "",
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
@@ -144,10 +145,12 @@ function configure() {
     page.error = page.runs[1].configure(page.text, source, solver, preset || "",
                                         worldSets().join("\n"));
   }
+  if (!page.error && page.compare) page.runs[1].shareCamera(first);
   $("error").hidden = !page.error;
   $("error").textContent = page.error;
   $("second").hidden = !page.compare || !!page.error;
   page.history = [];
+  page.surveying = !page.error && !survey(SURVEY_FIRST);
   if (!page.error) {
     page.solver = first.solver();
     page.preset = first.preset();
@@ -163,6 +166,14 @@ function configure() {
 }
 
 const activeRuns = () => (page.compare ? page.runs.slice(0, 2) : page.runs.slice(0, 1));
+
+// The camera frames the whole run, as i2d's frames do: each run's survey steps a copy of it to
+// the end first, this long (ms) before the first frame and then this long each animation frame
+// (a pyramid40 takes seconds); the view is drawn again when it is done.
+const SURVEY_FIRST = 200, SURVEY_EACH = 4;
+
+/// Surveys the runs for up to `milliseconds` each; true once all are done.
+const survey = (milliseconds) => activeRuns().every((run) => run.survey(milliseconds));
 
 function record() {
   page.history.push(page.runs[0].figures());
@@ -195,7 +206,8 @@ function draw() {
   $("view-label").textContent = page.solver + (page.preset ? ` (${page.preset})` : "");
   $("view2-label").textContent = page.compare.replace(":", " preset ");
   const run = page.runs[0];
-  $("status").textContent = `step ${run.stepCount()} of ${run.steps()}`;
+  $("status").textContent = `step ${run.stepCount()} of ${run.steps()}` +
+    (page.surveying ? " (framing the whole run…)" : "");
   plot();
   ++page.framesDrawn;
 }
@@ -383,6 +395,10 @@ function animate() {
     const elapsed = Math.min(0.1, (now - last) / 1000);
     last = now;
     const run = page.runs[0];
+    if (page.surveying && !page.error) {
+      page.surveying = !survey(SURVEY_EACH);
+      if (!page.surveying && !page.playing) draw();
+    }
     if (page.playing && !page.error && run.stepCount() < run.steps()) {
       owed += elapsed * Number($("speed").value) / run.dt();
       let stepped = false;

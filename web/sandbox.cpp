@@ -149,15 +149,47 @@ class Sandbox {
     }
   }
 
-  /// Back to step 0 of the scene.
+  /// Back to step 0 of the scene. The camera starts fitted to step 0; survey() fits it to the
+  /// whole run.
   void restart() {
     simulation_ = impulse2d::buildWorld(scene_);
-    camera_ = std::make_unique<render::RunCamera>(scene_.view, settings_, scene_.view.width,
+    survey_ = impulse2d::buildWorld(scene_);
+    first_ = render::captureFrame(*simulation_, scene_.name, settings_);
+    camera_ = std::make_shared<render::RunCamera>(scene_.view, settings_, scene_.view.width,
                                                   scene_.view.height);
-    camera_->add(simulation_->bodies());
-    renderer_ = std::make_unique<render::FrameRenderer>(camera_->cameraFor(simulation_->bodies()),
-                                                        scene_.name, settings_);
-    renderer_->fitForces(*simulation_);
+    camera_->add(survey_->bodies());
+    fitRenderer();
+  }
+
+  /// Runs a second copy of the run ahead for up to `milliseconds`, adding each of its states to
+  /// the camera, as `i2d run` adds every state it records before its frames are drawn; true once
+  /// it has reached the last step (or a step that fails, where i2d's run stops too). The camera
+  /// and the force scale are then those of i2d's frames.
+  bool survey(double milliseconds) {
+    if (!survey_) return true;
+    const double end = emscripten_get_now() + milliseconds;
+    bool failed = false;
+    try {
+      while (survey_->stepCount() < scene_.steps && emscripten_get_now() < end) {
+        survey_->step();
+        camera_->add(survey_->bodies());
+      }
+    } catch (const std::exception&) {
+      failed = true;
+    }
+    if (!failed && survey_->stepCount() < scene_.steps) return false;
+    survey_.reset();
+    fitRenderer();
+    return true;
+  }
+
+  /// Frames this run with `other`'s camera, as `i2d compare` frames its panels with one: both
+  /// surveys then add to it. Call it before either has surveyed a step.
+  void shareCamera(Sandbox& other) {
+    camera_ = other.camera_;
+    if (survey_) camera_->add(survey_->bodies());
+    fitRenderer();
+    other.fitRenderer();
   }
 
   /// Takes `count` steps; returns "" or the error that stopped the run.
@@ -191,6 +223,18 @@ class Sandbox {
   std::string preset() const { return scene_.preset; }
   int width() const { return scene_.view.width; }
   int height() const { return renderer_->frameHeight(); }
+
+  /// The world rectangle the frames show, [x0, x1, y0, y1] (m): the view line of i2d run's
+  /// summary, once survey() is done.
+  val shown() const {
+    const impulse2d::Aabb region = camera_->shown();
+    val corners = val::array();
+    for (const double value :
+         {region.lower.x(), region.upper.x(), region.lower.y(), region.upper.y()}) {
+      corners.call<void>("push", value);
+    }
+    return corners;
+  }
 
   /// The dynamic bodies' rows of `i2d run --csv` at this step, header excluded.
   std::string state() const {
@@ -251,11 +295,22 @@ class Sandbox {
   }
 
  private:
+  /// The renderer of the camera as it stands, with the run's force scale: the one i2d fits to
+  /// the run's first state through that camera.
+  void fitRenderer() {
+    renderer_ = std::make_unique<render::FrameRenderer>(camera_->cameraFor(first_.bodies),
+                                                        scene_.name, settings_);
+    renderer_->fitForces(first_);
+  }
+
   impulse2d::SceneFile scene_;
   render::RenderSettings settings_;
   std::unique_ptr<impulse2d::Simulation> simulation_;
-  std::unique_ptr<render::RunCamera> camera_;
+  /// Fitted to the states surveyed so far; shared with the side-by-side run's.
+  std::shared_ptr<render::RunCamera> camera_;
   std::unique_ptr<render::FrameRenderer> renderer_;
+  std::unique_ptr<impulse2d::Simulation> survey_;  ///< the run ahead; empty once it is done
+  render::FrameState first_;                       ///< step 0, which sets the force scale
 };
 
 /// The solvers the page offers and each one's presets: [{solver, presets: [{name, summary}]}].
@@ -286,6 +341,9 @@ EMSCRIPTEN_BINDINGS(impulse2d_sandbox) {
       .constructor<>()
       .function("configure", &Sandbox::configure)
       .function("restart", &Sandbox::restart)
+      .function("survey", &Sandbox::survey)
+      .function("shareCamera", &Sandbox::shareCamera)
+      .function("shown", &Sandbox::shown)
       .function("step", &Sandbox::step)
       .function("traceStep", &Sandbox::traceStep)
       .function("stepCount", &Sandbox::stepCount)
