@@ -4,7 +4,6 @@
 #include "mark_encoding.h"
 
 #include <cmath>
-#include <cstdlib>
 
 namespace sandbox {
 
@@ -14,86 +13,114 @@ namespace {
 
 /// Path coordinates are written in hundredths of a pixel, as integers.
 constexpr double kSteps = 100.0;
+/// The most characters a coordinate and a command letter take: " -9223372036854775808" (the
+/// most hundredths there are) with a point, and a letter.
+constexpr std::size_t kMostPerNumber = 24;
 
-long hundredths(double value) {
-  return std::lround(value * kSteps);
+long long hundredths(double value) {
+  return std::llround(value * kSteps);
 }
 
-/// Appends " 12.34" for 1234 hundredths (" -0.05" for -5, " 3.1" for 310, " 3" for 300).
-void appendFixed(std::string& out, long value) {
-  char text[24];
-  char* end = text + sizeof text;
-  char* start = end;
-  unsigned long magnitude = static_cast<unsigned long>(std::labs(value));
-  const unsigned long fraction = magnitude % 100;
-  if (fraction % 10 != 0) *--start = char('0' + fraction % 10);
-  if (fraction != 0) {
-    *--start = char('0' + fraction / 10);
-    *--start = '.';
+/// Writes path data at the end of a string, into room made for it beforehand: a frame's
+/// hundred thousand numbers, each written without a call to the string.
+class PathWriter {
+ public:
+  /// Room for `numbers` numbers and their commands at the end of `text`.
+  PathWriter(std::string& text, std::size_t numbers) : text_(text), used_(text.size()) {
+    text_.resize(used_ + kMostPerNumber * numbers + 2);
+    cursor_ = &text_[used_];
   }
-  magnitude /= 100;
-  do {
-    *--start = char('0' + magnitude % 10);
-    magnitude /= 10;
-  } while (magnitude != 0);
-  if (value < 0) *--start = '-';
-  *--start = ' ';
-  out.append(start, end);
-}
+  /// Cuts the string to what was written.
+  ~PathWriter() { text_.resize(std::size_t(cursor_ - text_.data())); }
+  PathWriter(const PathWriter&) = delete;
+  PathWriter& operator=(const PathWriter&) = delete;
 
-void appendNumber(std::string& out, double value) {
-  appendFixed(out, hundredths(value));
-}
+  void letter(char command) { *cursor_++ = command; }
+  void words(const char* text) {
+    while (*text != '\0') *cursor_++ = *text++;
+  }
+  void number(double value) { fixed(hundredths(value)); }
+  /// Writes " 12.34" for 1234 hundredths (" -0.05" for -5, " 3.1" for 310, " 3" for 300).
+  void fixed(long long value) {
+    char digits[32];
+    char* end = digits + sizeof digits;
+    char* start = end;
+    unsigned long long magnitude = value < 0 ? 0ull - static_cast<unsigned long long>(value)
+                                             : static_cast<unsigned long long>(value);
+    const unsigned long long fraction = magnitude % 100;
+    if (fraction % 10 != 0) *--start = char('0' + fraction % 10);
+    if (fraction != 0) {
+      *--start = char('0' + fraction / 10);
+      *--start = '.';
+    }
+    magnitude /= 100;
+    do {
+      *--start = char('0' + magnitude % 10);
+      magnitude /= 10;
+    } while (magnitude != 0);
+    if (value < 0) *--start = '-';
+    *--start = ' ';
+    while (start != end) *cursor_++ = *start++;
+  }
+
+ private:
+  std::string& text_;
+  std::size_t used_;
+  char* cursor_;
+};
 
 /// A circle as two half arcs, as canvas arc(0, 2π) draws it, from its rightmost point.
-void appendCircle(std::string& out, const impulse2d::Vec2& centre, double radius) {
-  out += 'M';
-  appendNumber(out, centre.x() + radius);
-  appendNumber(out, centre.y());
+void writeCircle(PathWriter& out, const impulse2d::Vec2& centre, double radius) {
+  out.letter('M');
+  out.number(centre.x() + radius);
+  out.number(centre.y());
   for (const double x : {centre.x() - radius, centre.x() + radius}) {
-    out += 'A';
-    appendNumber(out, radius);
-    appendNumber(out, radius);
-    out += " 0 1 0";
-    appendNumber(out, x);
-    appendNumber(out, centre.y());
+    out.letter('A');
+    out.number(radius);
+    out.number(radius);
+    out.words(" 0 1 0");
+    out.number(x);
+    out.number(centre.y());
   }
-  out += 'Z';
+  out.letter('Z');
 }
 
 /// A polygon or line: the first point absolute, each next one relative to the last (shorter to
 /// write and to parse). The steps are taken between rounded points, so no rounding adds up.
-void appendPolyline(std::string& out, const render::Outline& outline) {
-  long x = hundredths(outline.points.front().x());
-  long y = hundredths(outline.points.front().y());
-  out += 'M';
-  appendFixed(out, x);
-  appendFixed(out, y);
-  if (outline.points.size() > 1) out += 'l';
+void writePolyline(PathWriter& out, const render::Outline& outline) {
+  long long x = hundredths(outline.points.front().x());
+  long long y = hundredths(outline.points.front().y());
+  out.letter('M');
+  out.fixed(x);
+  out.fixed(y);
+  if (outline.points.size() > 1) out.letter('l');
   for (std::size_t k = 1; k < outline.points.size(); ++k) {
-    const long nextX = hundredths(outline.points[k].x());
-    const long nextY = hundredths(outline.points[k].y());
-    appendFixed(out, nextX - x);
-    appendFixed(out, nextY - y);
+    const long long nextX = hundredths(outline.points[k].x());
+    const long long nextY = hundredths(outline.points[k].y());
+    out.fixed(nextX - x);
+    out.fixed(nextY - y);
     x = nextX;
     y = nextY;
   }
-  if (outline.closed) out += 'Z';
+  if (outline.closed) out.letter('Z');
 }
 
 void appendOutlines(EncodedMarks& encoded, const render::Mark& mark) {
   const render::Color& c = mark.colour;
   encoded.numbers.insert(encoded.numbers.end(),
                          {double(c.r), double(c.g), double(c.b), double(c.a), mark.size});
+  std::size_t numbers = 0;
+  for (const render::Outline& outline : mark.outlines) numbers += 2 * outline.points.size() + 10;
+  PathWriter out(encoded.paths, numbers);
   for (const render::Outline& outline : mark.outlines) {
     if (outline.points.empty()) continue;
     if (outline.radius > 0.0) {
-      appendCircle(encoded.paths, outline.points.front(), outline.radius);
+      writeCircle(out, outline.points.front(), outline.radius);
     } else {
-      appendPolyline(encoded.paths, outline);
+      writePolyline(out, outline);
     }
   }
-  encoded.paths += '|';
+  out.letter('|');
 }
 
 }  // namespace

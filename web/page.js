@@ -73,10 +73,17 @@ function paintMarks(context, marks) {
   }
 }
 
+// The frame's text is measured for its layout (the legend's words repeat every frame).
 const measuring = document.createElement("canvas").getContext("2d");
+const measured = new Map();
 function measureText(text, size) {
-  measuring.font = fontOf(size);
-  return measuring.measureText(text).width;
+  const key = `${size} ${text}`;
+  if (!measured.has(key)) {
+    if (measured.size > 10000) measured.clear();
+    measuring.font = fontOf(size);
+    measured.set(key, measuring.measureText(text).width);
+  }
+  return measured.get(key);
 }
 
 // ---- the address --------------------------------------------------------------------------
@@ -210,6 +217,15 @@ function draw() {
     (page.surveying ? " (framing the whole run…)" : "");
   plot();
   ++page.framesDrawn;
+}
+
+/// Leaves the views the window's height below their top, less their captions: the whole frame
+/// shows without scrolling (web/sandbox.css).
+function fitViews() {
+  const top = $("views").getBoundingClientRect().top + window.scrollY;
+  const caption = $("view-label").offsetHeight;
+  const room = Math.max(120, window.innerHeight - top - caption - 8);
+  document.documentElement.style.setProperty("--view-room", `${room}px`);
 }
 
 // ---- the plots ----------------------------------------------------------------------------
@@ -432,7 +448,9 @@ async function start() {
   Object.assign(page, { solver: wanted.solver, preset: wanted.preset, compare: wanted.compare,
                         sets: wanted.sets });
   wire();
+  window.addEventListener("resize", fitViews);
   configure();
+  fitViews();
   animate();
   page.ready = true;
 }
