@@ -18,60 +18,11 @@ const page = {
   history: [],       // the plots' figures, one per step
   error: "",
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
+  painter: null,     // the worker painting the views (web/painter.js), where there is one
+  painting: 0,       // views handed to the painter and not yet painted
+  behind: false,     // a frame was left out while the painter was busy
 };
 window.sandboxPage = page;
-
-// The marks' kinds, in the order of render::Mark::Kind.
-const FILL = 0, STROKE = 1, TEXT = 2, SAVE = 3, TRANSLATE = 4, CLIP = 5, RESTORE = 6;
-
-const rgba = (n, i) => `rgba(${n[i]},${n[i + 1]},${n[i + 2]},${n[i + 3] / 255})`;
-const fonts = new Map();
-const fontOf = (size) => {
-  if (!fonts.has(size)) fonts.set(size, `${size}px "DejaVu Sans"`);
-  return fonts.get(size);
-};
-
-/// Paints the frame's marks (web/mark_encoding.h) as Cairo paints them for the PNGs: each fill
-/// or stroke is one Path2D made from its SVG path data (a Path2D built call by call, or a path
-/// per outline, costs several times as much for a pyramid's thousands of outlines).
-const pathText = new TextDecoder();
-function paintMarks(context, marks) {
-  const n = marks.numbers, paths = pathText.decode(marks.paths).split("|");
-  let i = 0, path = 0, text = 0;
-  context.lineJoin = "miter";
-  context.lineCap = "butt";
-  context.textBaseline = "alphabetic";
-  while (i < n.length) {
-    const kind = n[i++];
-    if (kind === FILL) {
-      context.fillStyle = rgba(n, i);
-      context.fill(new Path2D(paths[path++]));
-      i += 5;
-    } else if (kind === STROKE) {
-      context.strokeStyle = rgba(n, i);
-      context.lineWidth = n[i + 4];
-      context.stroke(new Path2D(paths[path++]));
-      i += 5;
-    } else if (kind === TEXT) {
-      context.fillStyle = rgba(n, i);
-      context.font = fontOf(n[i + 4]);
-      context.fillText(marks.texts[text++], n[i + 5], n[i + 6]);
-      i += 7;
-    } else if (kind === SAVE) {
-      context.save();
-    } else if (kind === TRANSLATE) {
-      context.translate(n[i], n[i + 1]);
-      i += 2;
-    } else if (kind === CLIP) {
-      context.beginPath();
-      context.rect(0, 0, n[i], n[i + 1]);
-      context.clip();
-      i += 2;
-    } else if (kind === RESTORE) {
-      context.restore();
-    }
-  }
-}
 
 // The frame's text is measured for its layout (the legend's words repeat every frame).
 const measuring = document.createElement("canvas").getContext("2d");
@@ -200,9 +151,23 @@ function stepOnce() {
   return true;
 }
 
+/// Paints each run's frame in its view: by the painter (web/painter.js) where the browser can
+/// hand a canvas to a worker, else here. While the painter is busy with the last frame, the
+/// newest state is painted when it is done: a slow painter shows fewer frames, never late ones.
 function draw() {
   if (page.error) return;
+  if (page.painting > 0) {
+    page.behind = true;
+    return;
+  }
   activeRuns().forEach((run, k) => {
+    if (page.painter) {
+      const marks = run.frame();
+      ++page.painting;
+      page.painter.postMessage({ view: k, width: run.width(), height: run.height(), marks },
+                               [marks.numbers.buffer, marks.paths.buffer]);
+      return;
+    }
     const canvas = k === 0 ? $("view") : $("view2");
     if (canvas.width !== run.width() || canvas.height !== run.height()) {
       canvas.width = run.width();
@@ -216,7 +181,26 @@ function draw() {
   $("status").textContent = `step ${run.stepCount()} of ${run.steps()}` +
     (page.surveying ? " (framing the whole run…)" : "");
   plot();
-  ++page.framesDrawn;
+  if (!page.painter) ++page.framesDrawn;
+}
+
+/// Hands the views' canvases to the painter, where the browser can.
+function startPainter() {
+  const views = [$("view"), $("view2")];
+  if (!window.OffscreenCanvas || !views[0].transferControlToOffscreen) return;
+  page.painter = new Worker("painter.js");
+  views.forEach((view, k) => {
+    const canvas = view.transferControlToOffscreen();
+    page.painter.postMessage({ view: k, canvas }, [canvas]);
+  });
+  page.painter.onmessage = () => {
+    if (--page.painting > 0) return;
+    ++page.framesDrawn;
+    if (page.behind) {
+      page.behind = false;
+      draw();
+    }
+  };
 }
 
 /// Leaves the views the window's height below their top, less their captions: the whole frame
@@ -448,6 +432,7 @@ async function start() {
   Object.assign(page, { solver: wanted.solver, preset: wanted.preset, compare: wanted.compare,
                         sets: wanted.sets });
   wire();
+  startPainter();
   window.addEventListener("resize", fitViews);
   configure();
   fitViews();
