@@ -1,6 +1,5 @@
 // Painting a frame's marks (render/marks.h, encoded by web/mark_encoding.h) on a canvas, as
-// Cairo paints them for the PNG frames. Loaded by the page, and by the painter (web/painter.js)
-// that paints the views off the page's thread.
+// Cairo paints them for the PNG frames.
 "use strict";
 
 // The marks' kinds, in the order of render::Mark::Kind.
@@ -17,8 +16,19 @@ const fontOf = (size) => {
 /// or stroke is one Path2D made from its SVG path data (a Path2D built call by call, or a path
 /// per outline, costs several times as much for a pyramid's thousands of outlines).
 const pathText = new TextDecoder();
+// The paths of the last frame painted, by their path data: a contact point's dot is filled and
+// then outlined along the same path, and bodies at rest keep theirs from frame to frame.
+let parsed = new Map();
 function paintMarks(context, marks) {
   const n = marks.numbers, paths = pathText.decode(marks.paths).split("|");
+  const kept = parsed;
+  parsed = new Map();
+  const pathOf = (data) => {
+    let path = parsed.get(data) || kept.get(data);
+    if (!path) path = new Path2D(data);
+    parsed.set(data, path);
+    return path;
+  };
   let i = 0, path = 0, text = 0;
   context.lineJoin = "miter";
   context.lineCap = "butt";
@@ -27,12 +37,12 @@ function paintMarks(context, marks) {
     const kind = n[i++];
     if (kind === FILL) {
       context.fillStyle = rgba(n, i);
-      context.fill(new Path2D(paths[path++]));
+      context.fill(pathOf(paths[path++]));
       i += 5;
     } else if (kind === STROKE) {
       context.strokeStyle = rgba(n, i);
       context.lineWidth = n[i + 4];
-      context.stroke(new Path2D(paths[path++]));
+      context.stroke(pathOf(paths[path++]));
       i += 5;
     } else if (kind === TEXT) {
       context.fillStyle = rgba(n, i);

@@ -18,9 +18,7 @@ const page = {
   history: [],       // the plots' figures, one per step
   error: "",
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
-  painter: null,     // the worker painting the views (web/painter.js), where there is one
-  painting: 0,       // views handed to the painter and not yet painted
-  behind: false,     // a frame was left out while the painter was busy
+  plotted: 0,        // when the plots were last drawn (performance.now())
 };
 window.sandboxPage = page;
 
@@ -130,6 +128,10 @@ const activeRuns = () => (page.compare ? page.runs.slice(0, 2) : page.runs.slice
 // (a pyramid40 takes seconds); the view is drawn again when it is done.
 const SURVEY_FIRST = 200, SURVEY_EACH = 4;
 
+// While the run plays, the plots are drawn again this often (ms), not every frame: redrawing
+// them costs the pyramid a quarter of its frame rate.
+const PLOT_EVERY = 100;
+
 /// Surveys the runs for up to `milliseconds` each; true once all are done.
 const survey = (milliseconds) => activeRuns().every((run) => run.survey(milliseconds));
 
@@ -151,23 +153,10 @@ function stepOnce() {
   return true;
 }
 
-/// Paints each run's frame in its view: by the painter (web/painter.js) where the browser can
-/// hand a canvas to a worker, else here. While the painter is busy with the last frame, the
-/// newest state is painted when it is done: a slow painter shows fewer frames, never late ones.
+/// Paints each run's frame in its view.
 function draw() {
   if (page.error) return;
-  if (page.painting > 0) {
-    page.behind = true;
-    return;
-  }
   activeRuns().forEach((run, k) => {
-    if (page.painter) {
-      const marks = run.frame();
-      ++page.painting;
-      page.painter.postMessage({ view: k, width: run.width(), height: run.height(), marks },
-                               [marks.numbers.buffer, marks.paths.buffer]);
-      return;
-    }
     const canvas = k === 0 ? $("view") : $("view2");
     if (canvas.width !== run.width() || canvas.height !== run.height()) {
       canvas.width = run.width();
@@ -180,27 +169,12 @@ function draw() {
   const run = page.runs[0];
   $("status").textContent = `step ${run.stepCount()} of ${run.steps()}` +
     (page.surveying ? " (framing the whole run…)" : "");
-  plot();
-  if (!page.painter) ++page.framesDrawn;
-}
-
-/// Hands the views' canvases to the painter, where the browser can.
-function startPainter() {
-  const views = [$("view"), $("view2")];
-  if (!window.OffscreenCanvas || !views[0].transferControlToOffscreen) return;
-  page.painter = new Worker("painter.js");
-  views.forEach((view, k) => {
-    const canvas = view.transferControlToOffscreen();
-    page.painter.postMessage({ view: k, canvas }, [canvas]);
-  });
-  page.painter.onmessage = () => {
-    if (--page.painting > 0) return;
-    ++page.framesDrawn;
-    if (page.behind) {
-      page.behind = false;
-      draw();
-    }
-  };
+  const now = performance.now();
+  if (!page.playing || run.stepCount() >= run.steps() || now - page.plotted >= PLOT_EVERY) {
+    plot();
+    page.plotted = now;
+  }
+  ++page.framesDrawn;
 }
 
 /// Leaves the views the window's height below their top, less their captions: the whole frame
@@ -376,6 +350,7 @@ function wire() {
   $("play").addEventListener("click", () => {
     page.playing = !page.playing;
     $("play").textContent = page.playing ? "Pause" : "Play";
+    if (!page.playing) plot();
   });
   $("step").addEventListener("click", () => { if (!page.error && stepOnce()) draw(); });
   $("restart").addEventListener("click", () => configure());
@@ -432,7 +407,6 @@ async function start() {
   Object.assign(page, { solver: wanted.solver, preset: wanted.preset, compare: wanted.compare,
                         sets: wanted.sets });
   wire();
-  startPainter();
   window.addEventListener("resize", fitViews);
   configure();
   fitViews();

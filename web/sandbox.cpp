@@ -183,7 +183,7 @@ class Sandbox {
     return true;
   }
 
-  /// Frames this run with `other`'s camera, as `i2d compare` frames its panels with one: both
+  /// Frames the run with `other`'s camera, as `i2d compare` frames its panels with one: both
   /// surveys then add to it. Call it before either has surveyed a step.
   void shareCamera(Sandbox& other) {
     camera_ = other.camera_;
