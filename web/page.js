@@ -164,11 +164,15 @@ function draw() {
     }
     paintMarks(canvas.getContext("2d"), run.frame());
   });
-  $("view-label").textContent = page.solver + (page.preset ? ` (${page.preset})` : "");
-  $("view2-label").textContent = page.compare.replace(":", " preset ");
   const run = page.runs[0];
-  $("status").textContent = `step ${run.stepCount()} of ${run.steps()}` +
-    (page.surveying ? " (framing the whole run…)" : "");
+  // Text set only where it changes: each setting makes the browser lay the page out again.
+  const show = (id, text) => {
+    if ($(id).textContent !== text) $(id).textContent = text;
+  };
+  show("view-label", page.solver + (page.preset ? ` (${page.preset})` : ""));
+  show("view2-label", page.compare.replace(":", " preset "));
+  show("status", `step ${run.stepCount()} of ${run.steps()}` +
+                 (page.surveying ? " (framing the whole run…)" : ""));
   const now = performance.now();
   if (!page.playing || run.stepCount() >= run.steps() || now - page.plotted >= PLOT_EVERY) {
     plot();
