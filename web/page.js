@@ -132,8 +132,13 @@ const SURVEY_FIRST = 200, SURVEY_EACH = 4;
 // them costs the pyramid a quarter of its frame rate.
 const PLOT_EVERY = 100;
 
-/// Surveys the runs for up to `milliseconds` each; true once all are done.
-const survey = (milliseconds) => activeRuns().every((run) => run.survey(milliseconds));
+/// Surveys the runs for up to `milliseconds` each; true once all are done, their force scales
+/// then fitted through the camera of the whole run (one camera for both, side by side).
+function survey(milliseconds) {
+  if (!activeRuns().every((run) => run.survey(milliseconds))) return false;
+  for (const run of activeRuns()) run.refit();
+  return true;
+}
 
 function record() {
   page.history.push(page.runs[0].figures());

@@ -164,7 +164,7 @@ class Sandbox {
   /// Runs a second copy of the run ahead for up to `milliseconds`, adding each of its states to
   /// the camera, as `i2d run` adds every state it records before its frames are drawn; true once
   /// it has reached the last step (or a step that fails, where i2d's run stops too). The camera
-  /// and the force scale are then those of i2d's frames.
+  /// is then that of i2d's frames, and refit() fits the force scale through it.
   bool survey(double milliseconds) {
     if (!survey_) return true;
     const double end = emscripten_get_now() + milliseconds;
@@ -179,9 +179,12 @@ class Sandbox {
     }
     if (!failed && survey_->stepCount() < scene_.steps) return false;
     survey_.reset();
-    fitRenderer();
     return true;
   }
+
+  /// Fits the force scale through the camera as it stands, as i2d fits it to the run's first
+  /// state through the camera of the whole run.
+  void refit() { fitRenderer(); }
 
   /// Frames the run with `other`'s camera, as `i2d compare` frames its panels with one: both
   /// surveys then add to it. Call it before either has surveyed a step.
@@ -295,8 +298,8 @@ class Sandbox {
   }
 
  private:
-  /// The renderer of the camera as it stands, with the run's force scale: the one i2d fits to
-  /// the run's first state through that camera.
+  /// A renderer of the camera as it stands, with the force scale fitted to the run's first state
+  /// through it.
   void fitRenderer() {
     renderer_ = std::make_unique<render::FrameRenderer>(camera_->cameraFor(first_.bodies),
                                                         scene_.name, settings_);
@@ -342,6 +345,7 @@ EMSCRIPTEN_BINDINGS(impulse2d_sandbox) {
       .function("configure", &Sandbox::configure)
       .function("restart", &Sandbox::restart)
       .function("survey", &Sandbox::survey)
+      .function("refit", &Sandbox::refit)
       .function("shareCamera", &Sandbox::shareCamera)
       .function("shown", &Sandbox::shown)
       .function("step", &Sandbox::step)
