@@ -14,79 +14,25 @@ const page = {
   compare: "",       // the side-by-side method, "" for none
   sets: [],          // "section.key=value", in order, as i2d --set takes them
   playing: false,
+  surveying: false,  // a run's survey (Sandbox::survey) has not reached its end yet
   history: [],       // the plots' figures, one per step
   error: "",
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
+  plotted: 0,        // when the plots were last drawn (performance.now())
 };
 window.sandboxPage = page;
 
-// The marks' kinds, in the order of render::Mark::Kind.
-const FILL = 0, STROKE = 1, TEXT = 2, SAVE = 3, TRANSLATE = 4, CLIP = 5, RESTORE = 6;
-
-const rgba = (n, i) => `rgba(${n[i]},${n[i + 1]},${n[i + 2]},${n[i + 3] / 255})`;
-
-/// Paints the frame's marks (web/sandbox.cpp encodeMarks) as Cairo paints them for the PNGs.
-function paintMarks(context, marks) {
-  const n = marks.numbers;
-  let i = 0, text = 0;
-  context.lineJoin = "miter";
-  context.lineCap = "butt";
-  context.textBaseline = "alphabetic";
-  while (i < n.length) {
-    const kind = n[i++];
-    if (kind === FILL || kind === STROKE) {
-      const count = n[i + 5];
-      if (kind === FILL) context.fillStyle = rgba(n, i);
-      else context.strokeStyle = rgba(n, i);
-      context.lineWidth = n[i + 4];
-      i += 6;
-      // One path per outline where a mark has many: the canvas paints a thousand small paths far
-      // faster than one path of a thousand parts, and the marks of one colour look the same.
-      const apart = count > 32;
-      context.beginPath();
-      for (let k = 0; k < count; ++k) {
-        const radius = n[i], closed = n[i + 1], points = n[i + 2];
-        i += 3;
-        if (apart) context.beginPath();
-        if (radius > 0) {
-          context.moveTo(n[i] + radius, n[i + 1]);
-          context.arc(n[i], n[i + 1], radius, 0, 2 * Math.PI);
-        } else {
-          context.moveTo(n[i], n[i + 1]);
-          for (let p = 1; p < points; ++p) context.lineTo(n[i + 2 * p], n[i + 2 * p + 1]);
-          if (closed) context.closePath();
-        }
-        i += 2 * points;
-        if (apart || k === count - 1) {
-          if (kind === FILL) context.fill();
-          else context.stroke();
-        }
-      }
-    } else if (kind === TEXT) {
-      context.fillStyle = rgba(n, i);
-      context.font = `${n[i + 4]}px "DejaVu Sans"`;
-      context.fillText(marks.texts[text++], n[i + 5], n[i + 6]);
-      i += 7;
-    } else if (kind === SAVE) {
-      context.save();
-    } else if (kind === TRANSLATE) {
-      context.translate(n[i], n[i + 1]);
-      i += 2;
-    } else if (kind === CLIP) {
-      context.beginPath();
-      context.rect(0, 0, n[i], n[i + 1]);
-      context.clip();
-      i += 2;
-    } else if (kind === RESTORE) {
-      context.restore();
-    }
-  }
-}
-
+// The frame's text is measured for its layout (the legend's words repeat every frame).
 const measuring = document.createElement("canvas").getContext("2d");
+const measured = new Map();
 function measureText(text, size) {
-  measuring.font = `${size}px "DejaVu Sans"`;
-  return measuring.measureText(text).width;
+  const key = `${size} ${text}`;
+  if (!measured.has(key)) {
+    if (measured.size > 10000) measured.clear();
+    measuring.font = fontOf(size);
+    measured.set(key, measuring.measureText(text).width);
+  }
+  return measured.get(key);
 }
 
 // ---- the address --------------------------------------------------------------------------
@@ -155,10 +101,12 @@ function configure() {
     page.error = page.runs[1].configure(page.text, source, solver, preset || "",
                                         worldSets().join("\n"));
   }
+  if (!page.error && page.compare) page.runs[1].shareCamera(first);
   $("error").hidden = !page.error;
   $("error").textContent = page.error;
   $("second").hidden = !page.compare || !!page.error;
   page.history = [];
+  page.surveying = !page.error && !survey(SURVEY_FIRST);
   if (!page.error) {
     page.solver = first.solver();
     page.preset = first.preset();
@@ -174,6 +122,23 @@ function configure() {
 }
 
 const activeRuns = () => (page.compare ? page.runs.slice(0, 2) : page.runs.slice(0, 1));
+
+// The camera frames the whole run, as i2d's frames do: each run's survey steps a copy of it to
+// the end first, this long (ms) before the first frame and then this long each animation frame
+// (a pyramid40 takes seconds); the view is drawn again when it is done.
+const SURVEY_FIRST = 200, SURVEY_EACH = 4;
+
+// While the run plays, the plots are drawn again this often (ms), not every frame: redrawing
+// them costs the pyramid a quarter of its frame rate.
+const PLOT_EVERY = 100;
+
+/// Surveys the runs for up to `milliseconds` each; true once all are done, their force scales
+/// then fitted through the camera of the whole run (one camera for both, side by side).
+function survey(milliseconds) {
+  if (!activeRuns().every((run) => run.survey(milliseconds))) return false;
+  for (const run of activeRuns()) run.refit();
+  return true;
+}
 
 function record() {
   page.history.push(page.runs[0].figures());
@@ -193,6 +158,7 @@ function stepOnce() {
   return true;
 }
 
+/// Paints each run's frame in its view.
 function draw() {
   if (page.error) return;
   activeRuns().forEach((run, k) => {
@@ -203,12 +169,30 @@ function draw() {
     }
     paintMarks(canvas.getContext("2d"), run.frame());
   });
-  $("view-label").textContent = page.solver + (page.preset ? ` (${page.preset})` : "");
-  $("view2-label").textContent = page.compare.replace(":", " preset ");
   const run = page.runs[0];
-  $("status").textContent = `step ${run.stepCount()} of ${run.steps()}`;
-  plot();
+  // Text set only where it changes: each setting makes the browser lay the page out again.
+  const show = (id, text) => {
+    if ($(id).textContent !== text) $(id).textContent = text;
+  };
+  show("view-label", page.solver + (page.preset ? ` (${page.preset})` : ""));
+  show("view2-label", page.compare.replace(":", " preset "));
+  show("status", `step ${run.stepCount()} of ${run.steps()}` +
+                 (page.surveying ? " (framing the whole run…)" : ""));
+  const now = performance.now();
+  if (!page.playing || run.stepCount() >= run.steps() || now - page.plotted >= PLOT_EVERY) {
+    plot();
+    page.plotted = now;
+  }
   ++page.framesDrawn;
+}
+
+/// Leaves the views the window's height below their top, less their captions: the whole frame
+/// shows without scrolling (web/sandbox.css).
+function fitViews() {
+  const top = $("views").getBoundingClientRect().top + window.scrollY;
+  const caption = $("view-label").offsetHeight;
+  const room = Math.max(120, window.innerHeight - top - caption - 8);
+  document.documentElement.style.setProperty("--view-room", `${room}px`);
 }
 
 // ---- the plots ----------------------------------------------------------------------------
@@ -375,6 +359,7 @@ function wire() {
   $("play").addEventListener("click", () => {
     page.playing = !page.playing;
     $("play").textContent = page.playing ? "Pause" : "Play";
+    if (!page.playing) plot();
   });
   $("step").addEventListener("click", () => { if (!page.error && stepOnce()) draw(); });
   $("restart").addEventListener("click", () => configure());
@@ -394,6 +379,10 @@ function animate() {
     const elapsed = Math.min(0.1, (now - last) / 1000);
     last = now;
     const run = page.runs[0];
+    if (page.surveying && !page.error) {
+      page.surveying = !survey(SURVEY_EACH);
+      if (!page.surveying && !page.playing) draw();
+    }
     if (page.playing && !page.error && run.stepCount() < run.steps()) {
       owed += elapsed * Number($("speed").value) / run.dt();
       let stepped = false;
@@ -427,7 +416,9 @@ async function start() {
   Object.assign(page, { solver: wanted.solver, preset: wanted.preset, compare: wanted.compare,
                         sets: wanted.sets });
   wire();
+  window.addEventListener("resize", fitViews);
   configure();
+  fitViews();
   animate();
   page.ready = true;
 }

@@ -1,5 +1,5 @@
 // The browser sandbox's entry: the library's scene loader, world and frame drawing behind one
-// embind class. The page (web/sandbox.js) gives it a scene's text and the command line's
+// embind class. The page (web/page.js) gives it a scene's text and the command line's
 // overrides, steps it, and paints the frame's marks (render/marks.h) on its canvas.
 #include <emscripten.h>
 #include <emscripten/bind.h>
@@ -18,6 +18,7 @@
 #include "impulse2d/render/marks.h"
 #include "impulse2d/scene/scene_file.h"
 #include "impulse2d/scene/setting_ranges.h"
+#include "mark_encoding.h"
 #include "run_figures.h"
 #include "scene_setup.h"
 
@@ -39,45 +40,23 @@ void appendNumber(std::string& line, double value) {
   line += buffer;
 }
 
-/// The marks as numbers the page reads in order (web/sandbox.js paintMarks) and the texts.
-val encodeMarks(const std::vector<render::Mark>& marks) {
-  std::vector<double> numbers;
+/// A copy of `values` as a new JavaScript typed array (`type`: "Float64Array", "Uint8Array").
+template <typename T>
+val typedArray(const char* type, const T* values, std::size_t count) {
+  return val::global(type).new_(val(emscripten::typed_memory_view(count, values)));
+}
+
+/// The marks as the page's paintMarks takes them (mark_encoding.h); the path data goes as bytes,
+/// which the page decodes in one call (embind's own string conversion reads them one by one).
+val marksForPage(const std::vector<render::Mark>& marks) {
+  const sandbox::EncodedMarks encoded = sandbox::encodeMarks(marks);
   val texts = val::array();
-  int textCount = 0;
-  for (const render::Mark& mark : marks) {
-    numbers.push_back(double(mark.kind));
-    const render::Color& c = mark.colour;
-    switch (mark.kind) {
-      case render::Mark::Kind::Fill:
-      case render::Mark::Kind::Stroke:
-        numbers.insert(numbers.end(), {double(c.r), double(c.g), double(c.b), double(c.a),
-                                       mark.size, double(mark.outlines.size())});
-        for (const render::Outline& outline : mark.outlines) {
-          numbers.insert(numbers.end(), {outline.radius, outline.closed ? 1.0 : 0.0,
-                                         double(outline.points.size())});
-          for (const impulse2d::Vec2& point : outline.points) {
-            numbers.insert(numbers.end(), {point.x(), point.y()});
-          }
-        }
-        break;
-      case render::Mark::Kind::Text:
-        numbers.insert(numbers.end(), {double(c.r), double(c.g), double(c.b), double(c.a),
-                                       mark.size, mark.at.x(), mark.at.y()});
-        texts.set(textCount++, mark.text);
-        break;
-      case render::Mark::Kind::Translate:
-      case render::Mark::Kind::Clip:
-        numbers.insert(numbers.end(), {mark.at.x(), mark.at.y()});
-        break;
-      case render::Mark::Kind::Save:
-      case render::Mark::Kind::Restore:
-        break;
-    }
-  }
+  for (std::size_t k = 0; k < encoded.texts.size(); ++k) texts.set(k, encoded.texts[k]);
   val result = val::object();
-  result.set("numbers",
-             val::global("Float64Array")
-                 .new_(val(emscripten::typed_memory_view(numbers.size(), numbers.data()))));
+  result.set("numbers", typedArray("Float64Array", encoded.numbers.data(), encoded.numbers.size()));
+  result.set("paths",
+             typedArray("Uint8Array", reinterpret_cast<const unsigned char*>(encoded.paths.data()),
+                        encoded.paths.size()));
   result.set("texts", texts);
   return result;
 }
@@ -170,15 +149,50 @@ class Sandbox {
     }
   }
 
-  /// Back to step 0 of the scene.
+  /// Back to step 0 of the scene. The camera starts fitted to step 0; survey() fits it to the
+  /// whole run.
   void restart() {
     simulation_ = impulse2d::buildWorld(scene_);
-    camera_ = std::make_unique<render::RunCamera>(scene_.view, settings_, scene_.view.width,
+    survey_ = impulse2d::buildWorld(scene_);
+    first_ = render::captureFrame(*simulation_, scene_.name, settings_);
+    camera_ = std::make_shared<render::RunCamera>(scene_.view, settings_, scene_.view.width,
                                                   scene_.view.height);
-    camera_->add(simulation_->bodies());
-    renderer_ = std::make_unique<render::FrameRenderer>(camera_->cameraFor(simulation_->bodies()),
-                                                        scene_.name, settings_);
-    renderer_->fitForces(*simulation_);
+    camera_->add(survey_->bodies());
+    fitRenderer();
+  }
+
+  /// Runs a second copy of the run ahead for up to `milliseconds`, adding each of its states to
+  /// the camera, as `i2d run` adds every state it records before its frames are drawn; true once
+  /// it has reached the last step (or a step that fails, where i2d's run stops too). The camera
+  /// is then that of i2d's frames, and refit() fits the force scale through it.
+  bool survey(double milliseconds) {
+    if (!survey_) return true;
+    const double end = emscripten_get_now() + milliseconds;
+    bool failed = false;
+    try {
+      while (survey_->stepCount() < scene_.steps && emscripten_get_now() < end) {
+        survey_->step();
+        camera_->add(survey_->bodies());
+      }
+    } catch (const std::exception&) {
+      failed = true;
+    }
+    if (!failed && survey_->stepCount() < scene_.steps) return false;
+    survey_.reset();
+    return true;
+  }
+
+  /// Fits the force scale through the camera as it stands, as i2d fits it to the run's first
+  /// state through the camera of the whole run.
+  void refit() { fitRenderer(); }
+
+  /// Frames the run with `other`'s camera, as `i2d compare` frames its panels with one: both
+  /// surveys then add to it. Call it before either has surveyed a step.
+  void shareCamera(Sandbox& other) {
+    camera_ = other.camera_;
+    if (survey_) camera_->add(survey_->bodies());
+    fitRenderer();
+    other.fitRenderer();
   }
 
   /// Takes `count` steps; returns "" or the error that stopped the run.
@@ -212,6 +226,18 @@ class Sandbox {
   std::string preset() const { return scene_.preset; }
   int width() const { return scene_.view.width; }
   int height() const { return renderer_->frameHeight(); }
+
+  /// The world rectangle the frames show, [x0, x1, y0, y1] (m): the view line of i2d run's
+  /// summary, once survey() is done.
+  val shown() const {
+    const impulse2d::Aabb region = camera_->shown();
+    val corners = val::array();
+    for (const double value :
+         {region.lower.x(), region.upper.x(), region.lower.y(), region.upper.y()}) {
+      corners.call<void>("push", value);
+    }
+    return corners;
+  }
 
   /// The dynamic bodies' rows of `i2d run --csv` at this step, header excluded.
   std::string state() const {
@@ -254,7 +280,7 @@ class Sandbox {
       render::Drawing drawing(marks);
       renderer_->drawOnto(drawing, render::captureFrame(*simulation_, scene_.name, settings_));
     }
-    return encodeMarks(marks.marks());
+    return marksForPage(marks.marks());
   }
 
   /// The settings of [world] and of the solver's [solver] table, each with its range.
@@ -272,11 +298,22 @@ class Sandbox {
   }
 
  private:
+  /// A renderer of the camera as it stands, with the force scale fitted to the run's first state
+  /// through it.
+  void fitRenderer() {
+    renderer_ = std::make_unique<render::FrameRenderer>(camera_->cameraFor(first_.bodies),
+                                                        scene_.name, settings_);
+    renderer_->fitForces(first_);
+  }
+
   impulse2d::SceneFile scene_;
   render::RenderSettings settings_;
   std::unique_ptr<impulse2d::Simulation> simulation_;
-  std::unique_ptr<render::RunCamera> camera_;
+  /// Fitted to the states surveyed so far; shared with the side-by-side run's.
+  std::shared_ptr<render::RunCamera> camera_;
   std::unique_ptr<render::FrameRenderer> renderer_;
+  std::unique_ptr<impulse2d::Simulation> survey_;  ///< the run ahead; empty once it is done
+  render::FrameState first_;                       ///< step 0, which sets the force scale
 };
 
 /// The solvers the page offers and each one's presets: [{solver, presets: [{name, summary}]}].
@@ -307,6 +344,10 @@ EMSCRIPTEN_BINDINGS(impulse2d_sandbox) {
       .constructor<>()
       .function("configure", &Sandbox::configure)
       .function("restart", &Sandbox::restart)
+      .function("survey", &Sandbox::survey)
+      .function("refit", &Sandbox::refit)
+      .function("shareCamera", &Sandbox::shareCamera)
+      .function("shown", &Sandbox::shown)
       .function("step", &Sandbox::step)
       .function("traceStep", &Sandbox::traceStep)
       .function("stepCount", &Sandbox::stepCount)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace impulse2d::render {
 
@@ -192,8 +193,9 @@ void Drawing::circle(const Vec2& centre, double radius, Color fill, Color outlin
   // Fill, then the outline as a stroke, as a polygon is drawn: an outline disc under the fill
   // would share a batch with every later outline disc and cover a fill whose colour an earlier
   // body had already batched (a ball listed after a box of its colour came out in the outline's).
-  add(false, fill, 0.0, circleOutline(centre, radius));
-  if (outlineWidth > 0.0) add(true, outline, outlineWidth, circleOutline(centre, radius));
+  Outline shape = circleOutline(centre, radius);
+  add(false, fill, 0.0, shape);
+  if (outlineWidth > 0.0) add(true, outline, outlineWidth, std::move(shape));
   log(DrawnShape::Kind::Circle, {centre}, fill, radius);
 }
 
