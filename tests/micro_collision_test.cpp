@@ -160,7 +160,7 @@ TEST_CASE("a pair impulse stops a box on a slope that holds it, in one micro-col
   CHECK(pairImpulsesTaken == 1);
   CHECK(stopped.velocity.norm() < 1e-12);
   CHECK(std::abs(stopped.angularVelocity) < 1e-12);
-  scene.solverSettings.micro.pairImpulses = false;
+  scene.solverSettings.micro.impulses = MicroCollisionImpulses::PointTotals;
   const auto [singleImpulsesTaken, rocked] = firstStep(scene, SolverEvent::Phase::Velocity);
   WARN("figure: box at rest on 20°, one corner at a time: "
        << singleImpulsesTaken << " impulses in the first step, leaving " << rocked.velocity.norm()

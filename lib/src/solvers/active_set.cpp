@@ -460,7 +460,8 @@ double impulseScale(const Eigen::VectorXd& impulses, const Eigen::VectorXd& free
 class FlipRule {
  public:
   explicit FlipRule(const ActiveSetSettings& settings)
-      : blockFailures_(settings.blockFailures), backtrack_(settings.backtrack) {}
+      : blockFailures_(settings.blockFailures),
+        backtrack_(settings.cyclingSafeguard == CyclingSafeguard::Backtrack) {}
 
   void apply(const std::vector<Violation>& found, std::vector<ContactState>& states) {
     const int count = static_cast<int>(found.size());

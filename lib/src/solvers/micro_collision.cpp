@@ -114,7 +114,7 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
 // (invertPairContactMatrix) is inverted the first time the pair is tried in a step.
 void MicroCollisionSolver::preparePairs() {
   pairs_.clear();
-  if (!settings_.pairImpulses || !settings_.impulseTotals) return;
+  if (settings_.impulses < MicroCollisionImpulses::Block) return;
   for (int first = 0; first + 1 < static_cast<int>(states_.size()); ++first) {
     if (otherPoint(first) != first + 1) continue;
     states_[first].pair = states_[first + 1].pair = static_cast<int>(pairs_.size());
@@ -335,7 +335,7 @@ bool MicroCollisionSolver::engaged(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
   const bool gapCloses = settings_.speculativeGaps &&
                          separatingVelocity * dt_ < state.penetration + settings_.touchingTolerance;
-  const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
+  const bool pressed = pointTotals() && normalPart(state.totalImpulse) > 0.0;
   return state.penetration >= -settings_.touchingTolerance || gapCloses || pressed;
 }
 
@@ -431,7 +431,7 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   ContactPoint& point = manifold.points[state.point];
   const Vec2 desired = desiredVelocityChange(state);
   const bool bounces = toBounce(state);
-  const Vec2 before = settings_.impulseTotals ? state.totalImpulse : Vec2::Zero();
+  const Vec2 before = pointTotals() ? state.totalImpulse : Vec2::Zero();
   const Vec2 impulse =
       newTotalImpulse(state, before, manifold.friction, desired, state.friction) - before;
   state.totalImpulse += impulse;
@@ -486,12 +486,12 @@ bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen:
 // so each stays in its cone when the total does. Taken only when both points are engaged and
 // need resolving (a pair impulse where one corner is already resolved costs a settling pile more
 // than it saves, docs/design/micro-collision-cost.md), both are to bounce or
-// neither (with pairBounces; without it a bounce passes point by point, as in the cradle), and
-// the new totals push at both points, with static friction or, where static friction cannot hold
-// the pair, dynamic friction (slidingPairTotals); otherwise false, and the worst point is
-// resolved alone. A frictionless pair (friction off, or μ = 0) takes only the normal changes,
-// through the normal rows of the contact matrix. A pair that bounces takes each point to its
-// bounce on its closing velocity now, and both count as bounced.
+// neither (with MicroCollisionImpulses::BlockWithBounces; without it a bounce passes point by
+// point, as in the cradle), and the new totals push at both points, with static friction or, where
+// static friction cannot hold the pair, dynamic friction (slidingPairTotals); otherwise false, and
+// the worst point is resolved alone. A frictionless pair (friction off, or μ = 0) takes only the
+// normal changes, through the normal rows of the contact matrix. A pair that bounces takes each
+// point to its bounce on its closing velocity now, and both count as bounced.
 bool MicroCollisionSolver::applyPairChange(const StepContext& context, const PointState& worst,
                                            int iteration) {
   PointPair& pair = pairs_[worst.pair];
@@ -525,7 +525,7 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
 // wants.
 bool MicroCollisionSolver::pairNeedsChange(const PointsOfPair& points, bool bounce,
                                            std::array<Vec2, 2>& desired) const {
-  if (bounce && !settings_.pairBounces) return false;
+  if (bounce && settings_.impulses != MicroCollisionImpulses::BlockWithBounces) return false;
   for (int i = 0; i < 2; ++i) {
     const PointState& point = *points[i];
     if (!engaged(point) || point.bounced) return false;

@@ -119,7 +119,7 @@ void SoftStepSolver::solveSubsteps(const StepContext& context) {
     warmStart();
     report_.residual = solve(context, true, substep);
     integratePositions(h);
-    if (settings_.relax) report_.residual = solve(context, false, substep);
+    if (settings_.relaxation != Relaxation::Off) report_.residual = solve(context, false, substep);
     report_.iterations = substep + 1;
   }
   if (settings_.restitution) applyRestitution(context);
@@ -290,12 +290,12 @@ void SoftStepSolver::warmStart() {
 }
 
 // One Gauss-Seidel sweep: the normal impulses of each contact, then its friction (with
-// frictionInRelax, only in the relax sweep). With bias the overlap is pushed out softly; without
-// (relax) only the velocities are made consistent. Each contact works on copies of its two
-// bodies' velocities, written back once it is solved, as Box2D v3's b2SolveContact does.
+// Relaxation::FrictionInRelax, only in the relax sweep). With bias the overlap is pushed out
+// softly; without (relax) only the velocities are made consistent. Each contact works on copies of
+// its two bodies' velocities, written back once it is solved, as Box2D v3's b2SolveContact does.
 // Returns the largest normal impulse change, the sweep's residual.
 double SoftStepSolver::solve(const StepContext& context, bool useBias, int substep) {
-  const bool friction = !useBias || !(settings_.frictionInRelax && settings_.relax);
+  const bool friction = !useBias || settings_.relaxation != Relaxation::FrictionInRelax;
   double largestChange = 0.0;
   for (Constraint& constraint : constraints_) {
     SubstepBody& bodyA = bodies_[constraint.bodyA];

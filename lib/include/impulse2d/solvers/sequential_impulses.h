@@ -43,6 +43,9 @@ class SequentialImpulseSolver : public ContactSolver {
   const SequentialImpulseSettings& settings() const { return settings_; }
 
  private:
+  /// Whether each contact's running total is clamped (accumulated impulses), not each impulse.
+  bool accumulated() const { return settings_.impulses != ImpulseAccumulation::ClampedEach; }
+
   /// Per contact point, computed once before the sweeps (Box2D-Lite's PreStep).
   struct PointState {
     /// The arms' torque per unit impulse along the normal and the tangent, r × n and r × t for
