@@ -64,23 +64,6 @@ std::optional<Vec2> touchingNormal(const RoundFeature& a, const RoundFeature& b,
   return Vec2(atTouch / distance);
 }
 
-/// The relative velocity along d (unit) at a contact point whose torque arms, r × d from A's and
-/// B's centres, are torqueArmA and torqueArmB: (vB − vA)·d + ωB (rB × d) − ωA (rA × d).
-double velocityAlong(const SolverBody& a, const SolverBody& b, const Vec2& d, double torqueArmA,
-                     double torqueArmB) {
-  return (b.velocity - a.velocity).dot(d) + b.angularVelocity * torqueArmB -
-         a.angularVelocity * torqueArmA;
-}
-
-/// An impulse λ along d at that point: −λd to A, +λd to B.
-void applyAlong(SolverBody& a, SolverBody& b, const Vec2& d, double torqueArmA, double torqueArmB,
-                double impulse) {
-  a.velocity -= (a.inverseMass * impulse) * d;
-  a.angularVelocity -= a.inverseInertia * impulse * torqueArmA;
-  b.velocity += (b.inverseMass * impulse) * d;
-  b.angularVelocity += b.inverseInertia * impulse * torqueArmB;
-}
-
 }  // namespace
 
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
