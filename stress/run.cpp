@@ -59,7 +59,7 @@ std::vector<Method> extraMethods() {
        {"solver.substeps=16", "solver.contact_hertz=240"}},
       // The two points of a flat contact resolved together, impulses and moves; off, one point
       // at a time as the lecture does (docs/micro-collisions.md).
-      {"micro − pairs", "micro", {"solver.impulses=point_totals", "solver.pair_moves=false"}},
+      {"micro − pairs", "micro", {"solver.impulses=point_totals", "solver.block_moves=false"}},
       {"micro − both bounce fixes",
        "micro",
        {"solver.remove_acceleration_velocity=false", "solver.lower_restitution_at_low_speed=false",

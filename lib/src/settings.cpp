@@ -97,7 +97,7 @@ MicroCollisionSettings MicroCollisionSettings::lecture() {
   settings.impulses = MicroCollisionImpulses::Separate;
   settings.severityCountsPushedPoints = false;
   settings.warmStarting = false;
-  settings.pairMoves = false;
+  settings.blockMoves = false;
   settings.passCapWhileProgressing = false;
   settings.positionEpsilon = 1e-5;
   return settings;
@@ -139,7 +139,7 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
        "worst first also counts a pushed point's overpush and slip (ours)"},
       {"warm_starting", &s.warmStarting, "", kNone,
        "each point starts the step from its last totals, by feature id (ours)"},
-      {"pair_moves", &s.pairMoves, "", kNone,
+      {"block_moves", &s.blockMoves, "", kNone,
        "a two-point manifold's penetrations are removed by one move (ours)"},
       {"pass_cap_while_progressing", &s.passCapWhileProgressing, "", kNone,
        "a step at the impulse cap goes on while it still progresses (ours)"},
@@ -149,8 +149,8 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
        "the least fraction the waiting total must fall over those rounds"},
       {"velocity_iterations_per_contact_limit", &s.velocityIterationsPerContactLimit, "",
        closed(0, 10000, kWork), "most impulses per contact point when passing the cap"},
-      {"pair_condition_limit", &s.pairConditionLimit, "", closed(1.0, 1e12),
-       "a pair is resolved together only when its matrix is this well conditioned"}};
+      {"block_condition_limit", &s.blockConditionLimit, "", closed(1.0, 1e12),
+       "a block is resolved together only when its matrix is this well conditioned"}};
 }
 
 namespace {

@@ -74,6 +74,9 @@ constexpr RetiredKey kRetiredKeys[] = {
      "was removed: it made results worse (docs/soft-step.md, \"Removed switches\")"},
     {"soft_step", "block_normals_condition_limit",
      "was removed with block_normals (docs/soft-step.md, \"Removed switches\")"},
+    {"micro", "pair_moves",
+     "is now 'block_moves': a two-point contact solved together is a block, as in Box2D"},
+    {"micro", "pair_condition_limit", "is now 'block_condition_limit', as in the other methods"},
     {"micro", "impulse_totals",
      "is now a value of 'impulses': impulse_totals = false is impulses = \"separate\", true is "
      "\"point_totals\" or more"},

@@ -150,7 +150,7 @@ void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
   }
   // Hadamard's ratio: det K against the product of its diagonal (1 for a diagonal K).
   const double diagonal = k(0, 0) * k(1, 1) * k(2, 2);
-  if (!(diagonal > 0.0) || k.determinant() < diagonal / settings_.pairConditionLimit) {
+  if (!(diagonal > 0.0) || k.determinant() < diagonal / settings_.blockConditionLimit) {
     pair.status = PointPair::Status::Singular;
     return;
   }
@@ -462,7 +462,7 @@ void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointS
 // (as newTotalImpulse does for one point), and the two normal totals that still give both points
 // their wanted normal change: Σⱼ K(i, j)(afterⱼ − beforeⱼ) = changeᵢ for the two normal rows,
 // with after₂ = σμ (after₀ + after₁). False when that 2×2 system is as ill-conditioned as a pair
-// matrix may not be (pairConditionLimit, Hadamard's ratio as in invertPairContactMatrix).
+// matrix may not be (blockConditionLimit, Hadamard's ratio as in invertPairContactMatrix).
 bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen::Vector3d& before,
                                              const Eigen::Vector3d& change, double slide,
                                              Eigen::Vector3d& after) const {
@@ -474,7 +474,7 @@ bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen:
     right(i) = change(i) + k.row(i) * before;
   }
   const double diagonal = std::abs(system(0, 0) * system(1, 1));
-  if (!(std::abs(system.determinant()) > diagonal / settings_.pairConditionLimit)) return false;
+  if (!(std::abs(system.determinant()) > diagonal / settings_.blockConditionLimit)) return false;
   const Eigen::Vector2d normals = system.inverse() * right;
   after << normals(0), normals(1), slide * (normals(0) + normals(1));
   return true;
@@ -686,7 +686,7 @@ int MicroCollisionSolver::worstPenetration() {
 // can be moved together; alone otherwise, as the lecture does.
 void MicroCollisionSolver::resolvePenetration(const StepContext& context, int index,
                                               int iteration) {
-  const int partner = settings_.pairMoves ? otherPoint(index) : -1;
+  const int partner = settings_.blockMoves ? otherPoint(index) : -1;
   if (partner >= 0 && resolvePair(context, index, partner, iteration)) return;
   resolvePoint(context, index, iteration);
 }
@@ -735,7 +735,7 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
     torqueArmB[i] = cross(armB[i], normal);
   }
   const Mat2 k = normalCouplingMatrix(a, b, normal, armA, armB);
-  if (!isWellConditioned(k, settings_.pairConditionLimit)) return false;
+  if (!isWellConditioned(k, settings_.blockConditionLimit)) return false;
   const Vec2 x = solveTwoPointLcp(k, Vec2(-points[0]->penetration, -points[1]->penetration));
   const double turnA = -a.inverseInertia * (torqueArmA[0] * x(0) + torqueArmA[1] * x(1));
   const double turnB = b.inverseInertia * (torqueArmB[0] * x(0) + torqueArmB[1] * x(1));

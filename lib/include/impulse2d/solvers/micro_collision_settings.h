@@ -38,7 +38,7 @@ struct MicroCollisionSettings {
   /// smaller than this is none (the point is not marked as bounced).
   double velocityEpsilon = 1e-4;
   /// m. Penetration resolution stops when no contact penetrates deeper than this: resting bodies
-  /// settle at up to this overlap. With pair moves 1e-4 keeps a stack straight at half the cost
+  /// settle at up to this overlap. With block moves 1e-4 keeps a stack straight at half the cost
   /// of 1e-5 (the lecture preset, one corner at a time, needs 1e-5; Millington's engine uses
   /// 0.01; docs/micro-collisions.md).
   double positionEpsilon = 1e-4;
@@ -71,9 +71,9 @@ struct MicroCollisionSettings {
   /// Warm starting: each point starts the step from the totals it ended the last with (by
   /// feature id), so resting weight need not pass down a stack anew every step. False: zero.
   bool warmStarting = true;
-  /// Pair moves: a two-point manifold's penetrations are removed together by one move of each
+  /// Block moves: a two-point manifold's penetrations are removed together by one move of each
   /// body (the 2×2 block solve), so resolving one corner does not drive the other deeper.
-  bool pairMoves = true;
+  bool blockMoves = true;
   /// Past the cap while progressing: a step at velocityIterationsPerContact goes on while the
   /// waiting points' total velocity change still falls by minimumProgress over progressRounds
   /// rounds, up to velocityIterationsPerContactLimit (a 40-row pyramid's first step needs 321).
@@ -88,7 +88,7 @@ struct MicroCollisionSettings {
   /// A pair is resolved together only when its matrix is this well conditioned: for a move,
   /// k₀₀² < limit · det K (Box2D 2.4's test); for an impulse, det K > (product of K's diagonal) /
   /// limit. A narrower pair (two points almost at one place) is resolved one point at a time.
-  double pairConditionLimit = 1000.0;
+  double blockConditionLimit = 1000.0;
 
   /// The plain method of the lecture: every refinement above off, and positionEpsilon 1e-5
   /// (one corner at a time needs the tighter epsilon to settle level).
