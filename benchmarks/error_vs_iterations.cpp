@@ -50,7 +50,8 @@ std::function<void(const StepContext&)> solverAt(const Variant& variant, int k,
                                                  SolverSettings settings) {
   settings.sequential.velocityIterations = k;
   settings.sequential.convergedImpulseChange = 0.0;  // exactly k sweeps
-  settings.sequential.warmStarting = variant.warm;
+  settings.sequential.impulses =
+      variant.warm ? ImpulseAccumulation::WarmStarted : ImpulseAccumulation::Accumulated;
   settings.micro.velocityIterationsPerContact = k;
   settings.micro.passCapWhileProgressing = false;  // at most k per point, exactly the cap
   if (variant.method == "micro") {

@@ -31,7 +31,7 @@ constexpr int largeTimedSteps = 10;
 Scene pyramidScene(const std::string& solver, int rows, bool sleeping) {
   Scene scene;
   scene.solver = solver;
-  scene.world.sleeping = sleeping;
+  scene.world.sleep = sleeping ? Sleep::KeepSpeedingUpAwake : Sleep::Off;
   BodyDef ground;
   ground.type = BodyType::Static;
   ground.shape = makeBox(2.0 * rows + 20.0, 1.0);

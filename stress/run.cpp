@@ -26,10 +26,8 @@ std::vector<Method> baseMethods() {
        {"solver.lower_restitution_at_low_speed=false", "solver.warm_starting=false"}},
       {"micro − friction", "micro", {"solver.friction=false"}},
       {"sequential", "sequential", {}},
-      {"sequential − warm starting", "sequential", {"solver.warm_starting=false"}},
-      {"sequential − accumulation",
-       "sequential",
-       {"solver.accumulate_impulses=false", "solver.warm_starting=false"}},
+      {"sequential − warm starting", "sequential", {"solver.impulses=accumulated"}},
+      {"sequential − accumulation", "sequential", {"solver.impulses=clamped_each"}},
       {"reference", "reference", {}},
       {"soft step", "soft_step", {}},
       {"box2d", kBox2dName, {}},
@@ -40,7 +38,7 @@ std::vector<Method> extraMethods() {
   return {
       {"sequential − accumulation + 4 substeps",
        "sequential",
-       {"solver.accumulate_impulses=false", "solver.warm_starting=false", "world.substeps=4"}},
+       {"solver.impulses=clamped_each", "world.substeps=4"}},
       {"sequential + 4 substeps", "sequential", {"world.substeps=4"}},
       {"sequential + speculative contacts", "sequential", {"world.speculative_contacts=true"}},
       {"sequential − bias", "sequential", {"solver.penetration_bias=false"}},
@@ -61,7 +59,7 @@ std::vector<Method> extraMethods() {
        {"solver.substeps=16", "solver.contact_hertz=240"}},
       // The two points of a flat contact resolved together, impulses and moves; off, one point
       // at a time as the lecture does (docs/micro-collisions.md).
-      {"micro − pairs", "micro", {"solver.pair_impulses=false", "solver.pair_moves=false"}},
+      {"micro − pairs", "micro", {"solver.impulses=point_totals", "solver.block_moves=false"}},
       {"micro − both bounce fixes",
        "micro",
        {"solver.remove_acceleration_velocity=false", "solver.lower_restitution_at_low_speed=false",
@@ -103,7 +101,7 @@ bool canRun(const StressScene& stress, const Method& method) {
 Scene sceneFor(const StressScene& stress, const Method& method, double knob) {
   Scene scene = stress.build(knob);
   scene.solver = method.solver;
-  scene.world.sleeping = false;
+  scene.world.sleep = Sleep::Off;
   for (const std::string& setting : method.settings) applySetting(scene, setting);
   return scene;
 }

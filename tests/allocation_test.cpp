@@ -73,7 +73,7 @@ TEST_CASE("the counter sees the first step of a fresh world allocate its contact
 TEST_CASE("a settled awake pyramid steps without allocating", "[allocation]") {
   for (const std::string solver : {"micro", "sequential"}) {
     Scene scene = solvers::pyramidScene(solver, 5, 0.6);
-    scene.world.sleeping = false;
+    scene.world.sleep = Sleep::Off;
     auto world = buildWorld(scene);
     solvers::runSteps(*world, solvers::stepsIn(2.0));
     INFO(solver);
@@ -84,7 +84,7 @@ TEST_CASE("a settled awake pyramid steps without allocating", "[allocation]") {
 TEST_CASE("a pyramid falling asleep and sleeping steps without allocating", "[allocation]") {
   for (const std::string solver : {"micro", "sequential"}) {
     Scene scene = solvers::pyramidScene(solver, 5, 0.6);
-    scene.world.sleeping = true;
+    scene.world.sleep = Sleep::KeepSpeedingUpAwake;
     auto world = buildWorld(scene);
     solvers::runSteps(*world, solvers::stepsIn(0.5));
     INFO(solver);

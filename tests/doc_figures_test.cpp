@@ -452,8 +452,8 @@ TEST_CASE("heavy box on light ones: the energy and depth at the end, both ways",
   const std::unique_ptr<World> held = runFor(pairs, pairs.steps);
   checkFigure(page, "(kinetic energy {8e-6} J at the end", kineticEnergy(*held));
   checkFigure(page, "deepest contact {0.2} mm)", 1000.0 * largestPenetration(*held));
-  const SceneFile single = withSettings("heavy_on_light.toml",
-                                        {"solver.pair_impulses=false", "solver.pair_moves=false"});
+  const SceneFile single = withSettings(
+      "heavy_on_light.toml", {"solver.impulses=point_totals", "solver.block_moves=false"});
   const std::unique_ptr<World> squeezed = runFor(single, single.steps);
   checkFigure(page, "(kinetic energy {305} J at the end)", kineticEnergy(*squeezed));
 }

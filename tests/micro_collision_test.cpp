@@ -134,11 +134,11 @@ TEST_CASE("pair moves lift a box sunk flat into the ground out level, in one mov
   scene.world.gravity = Vec2::Zero();
   scene.bodies.push_back(lecture::ground(0.5));
   scene.bodies.push_back(lecture::boxOnSlope(Vec2(1.0, 1.0), 0.0, 0.5, -0.05));
-  const auto [pairMovesTaken, lifted] = firstStep(scene, SolverEvent::Phase::Position);
-  CHECK(pairMovesTaken == 1);
+  const auto [blockMovesTaken, lifted] = firstStep(scene, SolverEvent::Phase::Position);
+  CHECK(blockMovesTaken == 1);
   CHECK(lifted.position.y() == Approx(0.5).margin(1e-12));
   CHECK(lifted.angle == Approx(0.0).margin(1e-12));
-  scene.solverSettings.micro.pairMoves = false;
+  scene.solverSettings.micro.blockMoves = false;
   const auto [singleMovesTaken, turned] = firstStep(scene, SolverEvent::Phase::Position);
   WARN("figure: box sunk 5 cm flat: one corner at a time, "
        << singleMovesTaken << " moves, left at angle " << turned.angle << " rad");
@@ -160,7 +160,7 @@ TEST_CASE("a pair impulse stops a box on a slope that holds it, in one micro-col
   CHECK(pairImpulsesTaken == 1);
   CHECK(stopped.velocity.norm() < 1e-12);
   CHECK(std::abs(stopped.angularVelocity) < 1e-12);
-  scene.solverSettings.micro.pairImpulses = false;
+  scene.solverSettings.micro.impulses = MicroCollisionImpulses::PointTotals;
   const auto [singleImpulsesTaken, rocked] = firstStep(scene, SolverEvent::Phase::Velocity);
   WARN("figure: box at rest on 20°, one corner at a time: "
        << singleImpulsesTaken << " impulses in the first step, leaving " << rocked.velocity.norm()

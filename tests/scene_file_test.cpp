@@ -161,13 +161,13 @@ TEST_CASE("a polygon's position moves from its origin to its centroid", "[scene-
 TEST_CASE("[solver] sets the chosen solver's settings, [render] the view", "[scene-file][solver]") {
   const SceneFile scene = parseScene(
       "[world]\nsolver = \"sequential\"\ncontact_margin = 0.01\n"
-      "[solver]\nvelocity_iterations = 20\nwarm_starting = false\nbias_factor = 0.1\n"
+      "[solver]\nvelocity_iterations = 20\nimpulses = \"accumulated\"\nbias_factor = 0.1\n"
       "[render]\nwidth = 640\nheight = 480\ncentre = [1, 2]\nscale = 50\n" +
           std::string(kOneBall),
       "s.toml");
   CHECK(scene.world.contactMargin == 0.01);
   CHECK(scene.solverSettings.sequential.velocityIterations == 20);
-  CHECK_FALSE(scene.solverSettings.sequential.warmStarting);
+  CHECK(scene.solverSettings.sequential.impulses == ImpulseAccumulation::Accumulated);
   CHECK(scene.solverSettings.sequential.targets.biasFactor == 0.1);
   CHECK(scene.view.width == 640);
   CHECK(scene.view.height == 480);
@@ -183,7 +183,7 @@ TEST_CASE("[solver] preset = \"lecture\" turns off every refinement of the micro
                                      "lecture.toml");
   const MicroCollisionSettings& micro = scene.solverSettings.micro;
   CHECK_FALSE(micro.speculativeGaps);
-  CHECK_FALSE(micro.impulseTotals);
+  CHECK(micro.impulses == MicroCollisionImpulses::Separate);
   CHECK_FALSE(micro.severityCountsPushedPoints);
   CHECK(micro.warmStarting);                // a key after the preset still applies
   CHECK(micro.removeAccelerationVelocity);  // the lecture's own fixes stay on
@@ -211,16 +211,45 @@ TEST_CASE("[solver] preset = \"box2d_2_4\" sets Box2D 2.4.1's contact solver",
         "presets lists all)");
 }
 
+TEST_CASE("a choice takes one of its names; another value is refused, listing the names",
+          "[scene-file][solver][choice]") {
+  const SceneFile scene = parseScene(
+      "[world]\nsolver = \"soft_step\"\nsleep = \"box2d\"\n[solver]\n"
+      "relaxation = \"friction_in_both\"\nrecycling = \"box2d_v3\"\n" +
+          std::string(kOneBall),
+      "s.toml");
+  CHECK(scene.world.sleep == Sleep::Box2d);
+  CHECK(scene.solverSettings.softStep.relaxation == Relaxation::FrictionInBoth);
+  CHECK(scene.solverSettings.softStep.recycling == RecyclingRule::Box2dV3);
+  CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nimpulses = \"pairs\"\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:12: unknown value 'pairs' for 'impulses' (known: separate, point_totals, "
+        "block, block_with_bounces)");
+  CHECK(errorOf("[world]\nsleep = true\n" + std::string(kOneBall)) ==
+        "bad.toml:2:9: 'sleep' must be a string (one of: off, box2d, keep_speeding_up_awake), "
+        "not a boolean");
+  CHECK(errorOf("[world]\nsleeping = true\n" + std::string(kOneBall)) ==
+        "bad.toml:2:12: 'sleeping' is now 'sleep': sleeping = false is sleep = \"off\", true is "
+        "\"keep_speeding_up_awake\" (or \"box2d\", Box2D's rule alone)");
+  CHECK(errorOf("[world]\nsolver = \"sequential\"\n[solver]\nwarm_starting = false\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:17: 'warm_starting' is now a value of 'impulses': warm_starting = true is "
+        "impulses = \"warm_started\", false is \"accumulated\"");
+  CHECK(errorOf("[world]\nsolver = \"reference\"\n[solver]\nbacktrack = false\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:13: 'backtrack' is now a value of 'cycling_safeguard': backtrack = true is "
+        "cycling_safeguard = \"backtrack\", false is \"judice_pires\"");
+}
+
 TEST_CASE("a renamed or removed solver key is refused with a hint naming what to write",
           "[scene-file][solver][errors]") {
   CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nwarm_start = false\n" +
                 std::string(kOneBall)) ==
-        "bad.toml:4:14: 'warm_start' is now 'warm_starting', its name in every method");
+        "bad.toml:4:14: 'warm_start' is now 'warm_starting', as in soft step");
   CHECK(errorOf("[world]\nsolver = \"soft_step\"\n[solver]\nrecycle_round_normals = true\n" +
                 std::string(kOneBall)) ==
-        "bad.toml:4:25: 'recycle_round_normals' is now 'renew_round_normals', with its meaning "
-        "turned so that true turns the idea on: recycle_round_normals = X is "
-        "renew_round_normals = not X");
+        "bad.toml:4:25: 'recycle_round_normals' is now a value of 'recycling': "
+        "recycle_round_normals = false is recycling = \"refined\", true is \"box2d_v3\"");
   CHECK(errorOf("[world]\nsolver = \"soft_step\"\n[solver]\nblock_normals = true\n" +
                 std::string(kOneBall)) ==
         "bad.toml:4:17: 'block_normals' was removed: it made results worse (docs/soft-step.md, "

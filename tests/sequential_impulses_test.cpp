@@ -96,11 +96,11 @@ TEST_CASE("20-box stack without accumulated impulses or warm starting sinks or t
   const double slopAllowance = kBoxes * scene.solverSettings.sequential.targets.allowedPenetration;
   CHECK(topBoxTravel(scene, 10.0) < slopAllowance);
   SECTION("without accumulation each impulse is clamped alone and cannot be taken back") {
-    scene.solverSettings.sequential.accumulateImpulses = false;
+    scene.solverSettings.sequential.impulses = ImpulseAccumulation::ClampedEach;
     CHECK(topBoxTravel(scene, 10.0) > slopAllowance);
   }
   SECTION("without warm starting the weight never reaches the bottom within a step") {
-    scene.solverSettings.sequential.warmStarting = false;
+    scene.solverSettings.sequential.impulses = ImpulseAccumulation::Accumulated;
     CHECK(topBoxTravel(scene, 10.0) > slopAllowance);
   }
 }

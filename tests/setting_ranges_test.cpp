@@ -34,9 +34,9 @@ std::vector<std::pair<std::string, double>> numericFields(const std::vector<Sett
   std::vector<std::pair<std::string, double>> numbers;
   for (const SettingField& field : fields) {
     std::visit(
-        [&](auto* target) {
-          using Target = std::remove_pointer_t<decltype(target)>;
-          if constexpr (std::is_same_v<Target, double> || std::is_same_v<Target, int>) {
+        [&](const auto& target) {
+          using Target = std::decay_t<decltype(target)>;
+          if constexpr (std::is_same_v<Target, double*> || std::is_same_v<Target, int*>) {
             numbers.emplace_back(field.name, double(*target));
           }
         },
@@ -55,9 +55,12 @@ std::string interval(const SettingRange& range, bool integer) {
 std::string defaultValue(const SettingField& field) {
   std::ostringstream text;
   std::visit(
-      [&text](auto* value) {
-        if constexpr (std::is_same_v<decltype(value), Vec2*>) {
+      [&text](const auto& value) {
+        using Value = std::decay_t<decltype(value)>;
+        if constexpr (std::is_same_v<Value, Vec2*>) {
           text << "[" << value->x() << ", " << value->y() << "]";
+        } else if constexpr (std::is_same_v<Value, SettingChoice>) {
+          text << '"' << value.current() << '"';
         } else {
           text << std::boolalpha << *value;
         }
@@ -68,6 +71,12 @@ std::string defaultValue(const SettingField& field) {
 
 std::string rangeColumn(const SettingField& field) {
   if (std::holds_alternative<bool*>(field.value)) return "bool";
+  if (const auto* choice = std::get_if<SettingChoice>(&field.value)) {
+    std::string names;
+    for (const std::string& name : choice->names)
+      names += (names.empty() ? "`" : ", `") + name + "`";
+    return "one of " + names;
+  }
   if (!field.range) return "finite";
   const bool integer = std::holds_alternative<int*>(field.value);
   return (integer ? "integer " : "") + interval(*field.range, integer);

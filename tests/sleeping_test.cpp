@@ -12,7 +12,7 @@ namespace {
 /// `count` unit boxes stacked on the ground (body 0) with sleeping switched on.
 Scene sleepyStack(const std::string& solver, int count) {
   Scene scene = solvers::stackScene(solver, count, 0.6);
-  scene.world.sleeping = true;
+  scene.world.sleep = Sleep::KeepSpeedingUpAwake;
   return scene;
 }
 
@@ -71,7 +71,7 @@ TEST_CASE("the ground contact never wakes a sleeping box, and its narrow phase i
 
 TEST_CASE("a sleeping pile runs no narrow phase for its sleeping pairs", "[sleeping][island]") {
   Scene scene = solvers::pyramidScene("sequential", 5, 0.6);
-  scene.world.sleeping = true;
+  scene.world.sleep = Sleep::KeepSpeedingUpAwake;
   auto world = buildWorld(scene);
   REQUIRE(stepsUntilAsleep(*world, solvers::stepsIn(3.0)) > 0);
   world->step();
@@ -120,9 +120,9 @@ TEST_CASE("a force, an impulse or a velocity given to a sleeping box wakes it",
   CHECK(box.position.x() > x);
 }
 
-TEST_CASE("with sleeping = false nothing ever sleeps", "[sleeping][switch]") {
+TEST_CASE("with sleep off nothing ever sleeps", "[sleeping][switch]") {
   Scene scene = solvers::pyramidScene("sequential", 5, 0.6);
-  REQUIRE_FALSE(scene.world.sleeping);  // the default: tests see the solver, not the sleep
+  REQUIRE(scene.world.sleep == Sleep::Off);  // the default: tests see the solver, not the sleep
   auto world = buildWorld(scene);
   for (int step = 0; step < solvers::stepsIn(5.0); ++step) {
     world->step();
@@ -135,14 +135,12 @@ namespace {
 
 /// m. How far a disc (r 0.5 m, μ 1) placed on a ground tilted by `degrees` rolls in `seconds`,
 /// with the given sleep settings.
-double rolledOnGentleSlope(const std::string& solver, double degrees, bool sleeping,
-                           bool keepSpeedingUpAwake, double seconds) {
+double rolledOnGentleSlope(const std::string& solver, double degrees, Sleep sleep, double seconds) {
   Scene scene = lecture::sceneWith(solver, kDt);
   const double angle = degrees * std::acos(-1.0) / 180.0;
   scene.bodies.push_back(lecture::ground(1.0, angle));
   scene.bodies.push_back(lecture::diskOnSlope(0.5, angle, 1.0));
-  scene.world.sleeping = sleeping;
-  scene.world.keepSpeedingUpAwake = keepSpeedingUpAwake;
+  scene.world.sleep = sleep;
   auto world = buildWorld(scene);
   const Vec2 start = world->bodies()[1].position;
   while (world->stepCount() * kDt < seconds) world->step();
@@ -160,9 +158,9 @@ double rolledOnGentleSlope(const std::string& solver, double degrees, bool sleep
 TEST_CASE("a disc starting to roll down a gentle slope is not put to sleep while it speeds up",
           "[sleeping][speeding-up]") {
   for (const std::string solver : {"micro", "sequential", "reference", "soft_step"}) {
-    const double awake = rolledOnGentleSlope(solver, 0.1, false, true, 6.0);
-    const double kept = rolledOnGentleSlope(solver, 0.1, true, true, 6.0);
-    const double frozen = rolledOnGentleSlope(solver, 0.1, true, false, 6.0);
+    const double awake = rolledOnGentleSlope(solver, 0.1, Sleep::Off, 6.0);
+    const double kept = rolledOnGentleSlope(solver, 0.1, Sleep::KeepSpeedingUpAwake, 6.0);
+    const double frozen = rolledOnGentleSlope(solver, 0.1, Sleep::Box2d, 6.0);
     INFO(solver << ": rolled " << awake << " m awake, " << kept << " m with sleeping on, " << frozen
                 << " m under Box2D's rule");
     CHECK(awake > 0.15);  // (1/3) g sin θ t² = 0.205 m

@@ -77,7 +77,7 @@ TEST_CASE("without relax a disk set on the ground rings like the spring-damper o
   constexpr double kDamping = 0.3;
   Scene scene = softDisk(0.0, 0.0, kGravity);
   SoftStepSettings& soft = scene.solverSettings.softStep;
-  soft.relax = false;
+  soft.relaxation = Relaxation::Off;
   soft.contactHertz = kHertz;
   soft.staticHertzFactor = 1.0;
   soft.dampingRatio = kDamping;
@@ -146,7 +146,7 @@ TEST_CASE("relax removes the velocity the bias added; without it a deep overlap 
     return lift;
   };
   const double withRelax = highestLift();
-  scene.solverSettings.softStep.relax = false;
+  scene.solverSettings.softStep.relaxation = Relaxation::Off;
   const double withoutRelax = highestLift();
   WARN("figure: highest lift above the ground with relax " << withRelax << " m, without "
                                                            << withoutRelax << " m");
@@ -278,11 +278,11 @@ TEST_CASE(
   constexpr double kStands = 0.1;     // m
   constexpr double kLeansOver = 0.5;  // m
   CHECK(topTravel() < kStands);
-  scene.solverSettings.softStep.frictionInRelax = false;
+  scene.solverSettings.softStep.relaxation = Relaxation::FrictionInBoth;
   CHECK(topTravel() < kStands);
-  scene.solverSettings.softStep.contactRecycling = false;
+  scene.solverSettings.softStep.recycling = RecyclingRule::Off;
   CHECK(topTravel() > kLeansOver);
-  scene.solverSettings.softStep.frictionInRelax = true;
+  scene.solverSettings.softStep.relaxation = Relaxation::FrictionInRelax;
   CHECK(topTravel() < kStands);
 }
 
@@ -294,7 +294,8 @@ TEST_CASE(
   // farther-reaching body's extent (0.707 m for a unit box).
   for (const bool withinFoundDistance : {false, true}) {
     Scene scene = stackScene("soft_step", 1, 0.6);
-    scene.solverSettings.softStep.recycleWithinFoundDistance = withinFoundDistance;
+    scene.solverSettings.softStep.recycling =
+        withinFoundDistance ? RecyclingRule::Refined : RecyclingRule::Box2dV3;
     const double turn = 0.002;  // rad: 1 mm lift + 1.4 mm at the extent, under the 5 mm margin
     scene.bodies[1].angle = turn;
     auto world = buildWorld(scene);
@@ -339,7 +340,8 @@ TEST_CASE(
   // recycled on v3's rule.
   for (const bool withinFoundDistance : {false, true}) {
     Scene scene = groundScene("soft_step", 0.6);
-    scene.solverSettings.softStep.recycleWithinFoundDistance = withinFoundDistance;
+    scene.solverSettings.softStep.recycling =
+        withinFoundDistance ? RecyclingRule::Refined : RecyclingRule::Box2dV3;
     BodyDef disc = lecture::diskOnSlope(0.5, 0.0, 0.6);
     scene.bodies.push_back(disc);
     auto world = buildWorld(scene);
@@ -357,7 +359,8 @@ TEST_CASE(
   for (const bool renewRoundNormals : {true, false}) {
     for (const double along : {0.0, 0.5}) {  // above the face's middle, above its right corner
       Scene scene = groundScene("soft_step", 0.6);
-      scene.solverSettings.softStep.renewRoundNormals = renewRoundNormals;
+      scene.solverSettings.softStep.recycling =
+          renewRoundNormals ? RecyclingRule::Refined : RecyclingRule::Box2dV3;
       scene.bodies[0].shape = makeBox(1.0, 1.0);
       scene.bodies[0].position = Vec2(0.0, -0.5);
       BodyDef disc = lecture::diskOnSlope(0.5, 0.0, 0.6);
@@ -441,7 +444,8 @@ TEST_CASE("a rolling pentagon's next vertex is found before it reaches the groun
     for (const bool withinFoundDistance : {true, false}) {
       Scene scene = groundScene("soft_step", 1.0);
       scene.world.dt = dt;
-      scene.solverSettings.softStep.recycleWithinFoundDistance = withinFoundDistance;
+      scene.solverSettings.softStep.recycling =
+          withinFoundDistance ? RecyclingRule::Refined : RecyclingRule::Box2dV3;
       BodyDef pentagon = lecture::polygonOnSlope(5, radius, 0.0, 1.0);
       // Turning clockwise about its front corner at 1.1 times the spin that just carries its
       // centre over that corner: it lands on its next face and stops there.
@@ -489,9 +493,9 @@ TEST_CASE("a 40-box stack stands 10 s with contact recycling, and buckles withou
   // 10 s, Box2D v3 3.4 cm). Falls: the top ends up more than a box width off the axis.
   constexpr double kStands = 0.2;  // m
   constexpr double kFalls = 1.0;   // m
-  scene.solverSettings.softStep.contactRecycling = false;
+  scene.solverSettings.softStep.recycling = RecyclingRule::Off;
   const double foundAnew = farthestTop();
-  scene.solverSettings.softStep.contactRecycling = true;
+  scene.solverSettings.softStep.recycling = RecyclingRule::Refined;
   const double recycled = farthestTop();
   WARN("figure: 40-box stack, top's farthest from the axis in 10 s: recycled "
        << recycled << " m, found anew " << foundAnew << " m");

@@ -80,6 +80,11 @@ std::string settingLines(std::mt19937& random, const std::string& scope,
     if (std::holds_alternative<bool*>(field.value)) {
       lines += field.name + " = " + (chosen(random) ? "true" : "false") + "\n";
     }
+    if (const auto* choice = std::get_if<SettingChoice>(&field.value)) {
+      const size_t pick =
+          std::uniform_int_distribution<size_t>(0, choice->names.size() - 1)(random);
+      lines += field.name + " = \"" + choice->names[pick] + "\"\n";
+    }
     const std::optional<SettingRange> range = findSettingRange(scope, field.name);
     if (!range || field.name == "substeps") continue;  // substeps: drawn 1 to 4 below
     const double value = insideRange(random, *range, integer);

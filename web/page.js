@@ -290,6 +290,10 @@ function showSettings() {
       input.type = "checkbox";
       input.checked = field.value;
       input.addEventListener("change", () => setSetting(key, input.checked));
+    } else if (field.kind === "choice") {
+      input = document.createElement("select");
+      for (const name of field.names) input.add(new Option(name, name, false, name === field.value));
+      input.addEventListener("change", () => setSetting(key, input.value));
     } else if (field.kind === "vector") {
       input = document.createElement("input");
       input.value = field.value;

@@ -105,6 +105,12 @@ val describeField(const std::string& scope, const std::string& section,
     char text[64];
     std::snprintf(text, sizeof text, "%g, %g", (*value)->x(), (*value)->y());
     entry.set("value", std::string(text));
+  } else if (const auto* choice = std::get_if<impulse2d::SettingChoice>(&field.value)) {
+    entry.set("kind", "choice");
+    entry.set("value", choice->current());
+    val names = val::array();
+    for (size_t i = 0; i < choice->names.size(); ++i) names.set(int(i), choice->names[i]);
+    entry.set("names", names);
   }
   if (const std::optional<impulse2d::SettingRange> range =
           impulse2d::findSettingRange(scope, field.name)) {

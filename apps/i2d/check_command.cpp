@@ -54,9 +54,12 @@ std::string describeShape(const Shape& shape) {
 std::string formatValue(const impulse2d::SettingField& field) {
   std::ostringstream out;
   std::visit(
-      [&out](auto* value) {
-        if constexpr (std::is_same_v<decltype(value), Vec2*>) {
+      [&out](const auto& value) {
+        using Value = std::decay_t<decltype(value)>;
+        if constexpr (std::is_same_v<Value, Vec2*>) {
           out << formatVec2(*value);
+        } else if constexpr (std::is_same_v<Value, impulse2d::SettingChoice>) {
+          out << '"' << value.current() << '"';
         } else {
           out << std::boolalpha << *value;
         }

@@ -22,7 +22,7 @@ constexpr double kGroundMargin = 10.0;
 
 Scene shippedScene(const std::string& name) {
   Scene scene = loadSceneFile(IMPULSE2D_SOURCE_DIR "/demos/scenes/" + name + ".toml");
-  scene.world.sleeping = false;
+  scene.world.sleep = Sleep::Off;
   return scene;
 }
 
@@ -34,7 +34,7 @@ Scene pyramidScene(int rows) {
   Scene scene;
   scene.name = "pyramid" + std::to_string(rows);
   scene.world.gravity = Vec2(0.0, kGravity);
-  scene.world.sleeping = false;
+  scene.world.sleep = Sleep::Off;
   BodyDef ground;
   ground.name = "ground";
   ground.type = BodyType::Static;

@@ -42,6 +42,12 @@ bool inSettingRange(double value, const SettingRange& range) {
   return aboveLowest && value <= range.highest;
 }
 
+std::string SettingChoice::listed() const {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
 std::string describeSettingRange(const SettingRange& range, bool integer, double value) {
   std::string text = std::string("must be ") + (integer ? "an integer " : "") + "in " +
                      (range.lowestIncluded ? "[" : "(") + formatBound(range.lowest, integer) +
@@ -69,32 +75,29 @@ std::vector<SettingField> describe(WorldSettings& s) {
       {"refuse_internal_edges", &s.refuseInternalEdges, "", kNone,
        "refuse contacts on the internal edges of static pieces laid flush, so a body crossing the "
        "seam of two floor tiles meets one surface (`contact-generation.md`)"},
-      {"sleeping", &s.sleeping, "", kNone,
-       "islands at rest sleep: not integrated, contacts neither recomputed nor solved "
-       "(`sleeping.md`)"},
+      {"sleep", choice(s.sleep, {"off", "box2d", "keep_speeding_up_awake"}), "", kNone,
+       "islands at rest sleep: not integrated, contacts neither recomputed nor solved; `box2d`: "
+       "a body slower than the thresholds rests; `keep_speeding_up_awake`: and its speed grew by "
+       "less than `speed_up_share` of them since its rest began (ours; Box2D's rule freezes a "
+       "slowly starting body; `sleeping.md`)"},
       {"sleep_linear_speed", &s.sleepLinearSpeed, "m/s", closed(0.0, 100.0),
        "a body slower than this (and the angular speed) counts as resting"},
       {"sleep_angular_speed", &s.sleepAngularSpeed, "rad/s", closed(0.0, 100.0),
        "the angular speed below which a body counts as resting (2°/s)"},
       {"time_to_sleep", &s.timeToSleep, "s", closed(0.0, 1e6),
        "an island sleeps once all its bodies have rested this long"},
-      {"keep_speeding_up_awake", &s.keepSpeedingUpAwake, "", kNone,
-       "a body whose speed grew by `speed_up_share` of the thresholds since its rest began is "
-       "not resting (ours; off: Box2D's rule, which freezes a slowly starting body; "
-       "`sleeping.md`)"},
       {"speed_up_share", &s.speedUpShare, "", closed(0.0, 1.0),
-       "that share: 1 mm/s and 0.2°/s at the default thresholds"}};
+       "that share under `keep_speeding_up_awake`: 1 mm/s and 0.2°/s at the default "
+       "thresholds"}};
 }
 
 MicroCollisionSettings MicroCollisionSettings::lecture() {
   MicroCollisionSettings settings;
   settings.speculativeGaps = false;
-  settings.impulseTotals = false;
+  settings.impulses = MicroCollisionImpulses::Separate;
   settings.severityCountsPushedPoints = false;
   settings.warmStarting = false;
-  settings.pairImpulses = false;
-  settings.pairBounces = false;
-  settings.pairMoves = false;
+  settings.blockMoves = false;
   settings.passCapWhileProgressing = false;
   settings.positionEpsilon = 1e-5;
   return settings;
@@ -126,17 +129,17 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
        "a point apart by no more than this counts as touching"},
       {"speculative_gaps", &s.speculativeGaps, "", kNone,
        "a gap that would close within the step counts, and may close, no more (ours)"},
-      {"impulse_totals", &s.impulseTotals, "", kNone,
-       "an update's impulses at a point add up to one micro-collision that never pulls (ours)"},
+      {"impulses", choice(s.impulses, {"separate", "point_totals", "block", "block_with_bounces"}),
+       "", kNone,
+       "`separate`: each impulse is the lecture's rule alone; ours: `point_totals`, an update's "
+       "impulses at a point add up to one micro-collision that never pulls; `block`, and a "
+       "two-point manifold's worst point is resolved with its other point; `block_with_bounces`, "
+       "and its points bounce as one"},
       {"severity_counts_pushed_points", &s.severityCountsPushedPoints, "", kNone,
        "worst first also counts a pushed point's overpush and slip (ours)"},
       {"warm_starting", &s.warmStarting, "", kNone,
        "each point starts the step from its last totals, by feature id (ours)"},
-      {"pair_impulses", &s.pairImpulses, "", kNone,
-       "a two-point manifold's worst point is resolved with its other point (ours)"},
-      {"pair_bounces", &s.pairBounces, "", kNone,
-       "a two-point manifold whose points both bounce bounces as one (ours)"},
-      {"pair_moves", &s.pairMoves, "", kNone,
+      {"block_moves", &s.blockMoves, "", kNone,
        "a two-point manifold's penetrations are removed by one move (ours)"},
       {"pass_cap_while_progressing", &s.passCapWhileProgressing, "", kNone,
        "a step at the impulse cap goes on while it still progresses (ours)"},
@@ -146,8 +149,8 @@ std::vector<SettingField> describe(MicroCollisionSettings& s) {
        "the least fraction the waiting total must fall over those rounds"},
       {"velocity_iterations_per_contact_limit", &s.velocityIterationsPerContactLimit, "",
        closed(0, 10000, kWork), "most impulses per contact point when passing the cap"},
-      {"pair_condition_limit", &s.pairConditionLimit, "", closed(1.0, 1e12),
-       "a pair is resolved together only when its matrix is this well conditioned"}};
+      {"block_condition_limit", &s.blockConditionLimit, "", closed(1.0, 1e12),
+       "a block is resolved together only when its matrix is this well conditioned"}};
 }
 
 namespace {
@@ -212,10 +215,10 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
        "most sweeps over all contacts per step"},
       {"converged_impulse_change", &s.convergedImpulseChange, "", closed(0.0, 1000.0),
        "the sweeps stop once none changed an impulse by more than this share of the largest"},
-      {"accumulate_impulses", &s.accumulateImpulses, "", kNone,
-       "clamp each contact's running total rather than each impulse"},
-      {"warm_starting", &s.warmStarting, "", kNone,
-       "begin each step from the last step's totals, by feature id"}};
+      {"impulses", choice(s.impulses, {"clamped_each", "accumulated", "warm_started"}), "", kNone,
+       "`clamped_each`: each impulse clamped alone; `accumulated`: each contact's running total "
+       "clamped; `warm_started`: and each step begins from the last step's totals, by feature "
+       "id"}};
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);
   fields.insert(fields.end(),
@@ -273,10 +276,11 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
        "the factorization pivots on the diagonal while it is this share of its column's largest"},
       {"max_factorizations", &a.maxFactorizations, "", closed(0, 10000, kWork),
        "the active set gives up after this many factorizations"},
+      {"cycling_safeguard", choice(a.cyclingSafeguard, {"judice_pires", "backtrack"}), "", kNone,
+       "after a flip that does not help: `judice_pires`, more block flips, then one point at a "
+       "time; `backtrack`, back to the best states, flipping half as many"},
       {"block_failures", &a.blockFailures, "", closed(0, 10000),
-       "block flips that do not help before flipping one point at a time (without `backtrack`)"},
-      {"backtrack", &a.backtrack, "", kNone,
-       "a flip that does not help goes back to the best states and flips half as many"},
+       "under `judice_pires`, block flips that do not help before flipping one at a time"},
       {"enter_sliding", &a.enterSliding, "", kNone,
        "a separated point the answer closes while it slips starts sliding, not sticking"},
       {"regularization", &a.regularization, "", closed(0.0, 1.0),
@@ -310,9 +314,7 @@ SoftStepSettings SoftStepSettings::box2dV3() {
   SoftStepSettings settings;
   settings.roundSurfaces = false;
   settings.speculativeAtTouch = false;
-  settings.recycleWithinFoundDistance = false;
-  settings.recycleInWorldFrame = false;
-  settings.renewRoundNormals = false;
+  settings.recycling = RecyclingRule::Box2dV3;
   settings.restitutionBlock.enabled = false;
   settings.frictionInRestitution = false;
   settings.restitutionOnStepTotals = false;
@@ -333,15 +335,18 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
            "the fastest the bias pushes overlapping bodies apart (v3: 3)"},
           {"soft_contacts", &s.softContacts, "", kNone,
            "soft constraints from hertz and damping; off: the rigid limit"},
-          {"relax", &s.relax, "", kNone, "a solve without bias after the positions moved (v3)"},
-          {"friction_in_relax", &s.frictionInRelax, "", kNone,
-           "friction in the relax solve only (v3 since 2025); off: in both solves"},
+          {"relaxation", choice(s.relaxation, {"off", "friction_in_both", "friction_in_relax"}), "",
+           kNone,
+           "a solve without bias after the positions moved (v3's relax), friction in both solves "
+           "(v3.0) or in the relax solve only (v3 since 2025)"},
           {"warm_starting", &s.warmStarting, "", kNone,
            "each step and substep starts from the last impulses"},
           {"speculative_contacts", &s.speculativeContacts, "", kNone,
            "speculative contacts whatever the world says, as v3 always has them"},
-          {"contact_recycling", &s.contactRecycling, "", kNone,
-           "a manifold is kept as found while the bodies move little (v3)"},
+          {"recycling", choice(s.recycling, {"off", "box2d_v3", "refined"}), "", kNone,
+           "a manifold is kept as found while the bodies move little (`box2d_v3`); `refined` "
+           "(ours): also found anew past the distance a one-point manifold was found within, "
+           "measured in the world's frame, and every step when its normal runs to a circle"},
           {"round_surfaces", &s.roundSurfaces, "", kNone,
            "a circle's contact follows its centre and acts where it will touch (ours)"},
           {"speculative_at_touch", &s.speculativeAtTouch, "", kNone,
@@ -350,16 +355,10 @@ std::vector<SettingField> describe(SoftStepSettings& s) {
            "a manifold is found anew once B has moved this far relative to A"},
           {"recycle_largest_turn", &s.recycleLargestTurn, "rad", closed(0.0, kPi),
            "...or once either body has turned this far"},
-          {"recycle_within_found_distance", &s.recycleWithinFoundDistance, "", kNone,
-           "a one-point manifold is also found anew past the distance it was found within (ours)"},
-          {"recycle_in_world_frame", &s.recycleInWorldFrame, "", kNone,
-           "the recycle distance is measured in the world's frame (ours)"},
           {"friction_in_restitution", &s.frictionInRestitution, "", kNone,
            "one friction solve after a bounce (ours)"},
           {"restitution_on_step_totals", &s.restitutionOnStepTotals, "", kNone,
            "a bounce may take back what any substep pushed at its point (ours)"},
-          {"renew_round_normals", &s.renewRoundNormals, "", kNone,
-           "a manifold whose normal runs to a circle's centre is found anew every step (ours)"},
           {"restitution", &s.restitution, "", kNone, "a restitution pass after the substeps (v3)"},
           {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
            "below this closing speed a contact does not bounce (v3: 1)"},

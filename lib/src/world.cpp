@@ -317,7 +317,7 @@ int World::islandOf(int body) {
 // An awake body touching a sleeping one wakes the sleeper's whole island, so the island is
 // solved as one again, with the manifolds it kept as warm-start data.
 void World::wakeTouchedIslands() {
-  if (!settings_.sleeping) return;
+  if (settings_.sleep == Sleep::Off) return;
   buildIslands();
   islandAwake_.assign(bodies_.size(), 0);
   for (int i = 0; i < int(bodies_.size()); ++i) {
@@ -390,7 +390,7 @@ void World::refreshCaches() {
 // An island sleeps when its most restless body has rested for timeToSleep (Box2D's rule): one
 // moving body keeps the whole island awake.
 void World::putRestingIslandsToSleep(double h) {
-  if (!settings_.sleeping) return;
+  if (settings_.sleep == Sleep::Off) return;
   islandRested_.assign(bodies_.size(), std::numeric_limits<double>::infinity());
   for (int i = 0; i < int(bodies_.size()); ++i) {
     if (!bodies_[i].isAwake()) continue;
@@ -405,8 +405,8 @@ void World::putRestingIslandsToSleep(double h) {
   }
 }
 
-// A body rests while it is slower than the thresholds and, with keepSpeedingUpAwake, has not sped
-// up by speedUpShare of them since its rest began; a body that has begins its rest again.
+// A body rests while it is slower than the thresholds and, with Sleep::KeepSpeedingUpAwake, has not
+// sped up by speedUpShare of them since its rest began; a body that has begins its rest again.
 void World::updateSleepTime(Body& body, double h) const {
   const double speed = body.velocity.norm();
   const double spin = std::abs(body.angularVelocity);
@@ -415,7 +415,7 @@ void World::updateSleepTime(Body& body, double h) const {
     return;
   }
   const double share = settings_.speedUpShare;
-  const bool speedingUp = settings_.keepSpeedingUpAwake &&
+  const bool speedingUp = settings_.sleep == Sleep::KeepSpeedingUpAwake &&
                           (speed - body.restSpeed > share * settings_.sleepLinearSpeed ||
                            spin - body.restSpin > share * settings_.sleepAngularSpeed);
   if (body.sleepTime == 0.0 || speedingUp) {

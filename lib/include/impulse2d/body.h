@@ -69,7 +69,7 @@ struct Body {
   bool asleep = false;
   /// s. How long the body has been slower than the world's sleep thresholds.
   double sleepTime = 0.0;
-  /// m/s and rad/s. Its speed and spin when that rest began (WorldSettings::keepSpeedingUpAwake).
+  /// m/s and rad/s. Its speed and spin when that rest began (Sleep::KeepSpeedingUpAwake).
   double restSpeed = 0.0;
   /// rad/s
   double restSpin = 0.0;

@@ -5,6 +5,7 @@
 // set them, the ranges are checked and docs/scene-format.md's tables are generated.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <variant>
@@ -50,6 +51,26 @@ struct SettingRange {
   std::string bound;
 };
 
+/// A setting that is one of a few named values (an enum): its scene-file value is one of `names`,
+/// in the enum's order.
+struct SettingChoice {
+  std::vector<std::string> names;  ///< each value's scene-file name, in the enum's order
+  std::function<int()> get;        ///< the field's value, as its index in `names`
+  std::function<void(int)> set;    ///< sets the field to the value at an index of `names`
+
+  /// The scene-file name of the field's value.
+  const std::string& current() const { return names[size_t(get())]; }
+  /// "a, b, c": the names, for messages and listings.
+  std::string listed() const;
+};
+
+/// The choice of `field`, an enum whose values in order are called `names` in scene files.
+template <typename Enum>
+SettingChoice choice(Enum& field, std::vector<std::string> names) {
+  return {std::move(names), [&field] { return static_cast<int>(field); },
+          [&field](int index) { field = static_cast<Enum>(index); }};
+}
+
 /// The declaration of one setting: its scene-file name, the field it sets, its unit, its range
 /// and its meaning in a line. The field's default is its initializer in the struct. The scene
 /// loader, its range checks, `i2d check`'s listing and the tables of docs/scene-format.md all
@@ -57,9 +78,9 @@ struct SettingRange {
 struct SettingField {
   std::string name;  ///< snake_case, as in scene files
   /// the field in the struct
-  std::variant<double*, int*, bool*, Vec2*> value;
-  std::string unit;                   ///< SI unit, empty for a count, a ratio or a switch
-  std::optional<SettingRange> range;  ///< every number has one; a switch or a vector has none
+  std::variant<double*, int*, bool*, Vec2*, SettingChoice> value;
+  std::string unit;                   ///< SI unit, empty for a count, a ratio, a switch or a choice
+  std::optional<SettingRange> range;  ///< every number has one; a switch, choice or vector none
   std::string meaning;                ///< one line, as the docs' tables show it
 };
 

@@ -7,6 +7,24 @@
 
 namespace impulse2d {
 
+/// Islands of bodies at rest go to sleep: they are not integrated, their contacts are neither
+/// recomputed nor solved, until an awake body touches them or the user pushes one.
+enum class Sleep {
+  /// Nothing sleeps: every body is integrated and every contact solved each step.
+  Off,
+  /// Box2D's rule: a body slower than sleepLinearSpeed and sleepAngularSpeed counts as resting.
+  Box2d,
+  /// Keep a body that is speeding up awake, ours beyond Box2D: a body counts as resting only
+  /// while its speed and spin have grown by less than speedUpShare of the thresholds since its
+  /// rest began; past that its rest begins again. A body that starts from rest and gathers speed
+  /// slowly is then not frozen before it reaches the thresholds: under Box2D's rule a disc
+  /// rolling down 0.15° (a = 0.017 m/s²), a box on a slope 0.002 under its friction's limit or a
+  /// seesaw 0.5 % out of balance is still slower than them after timeToSleep, falls asleep and
+  /// never moves again, since a static body wakes nothing. With it the slowest start that
+  /// escapes is ten times slower (docs/sleeping.md).
+  KeepSpeedingUpAwake,
+};
+
 /// The settings of a world: gravity, the time step and what every step does besides solving.
 struct WorldSettings {
   /// m/s^2. Earth's gravity, downwards.
@@ -33,9 +51,8 @@ struct WorldSettings {
   /// moving body meets one surface. Off, a box sliding across the seam of two floor tiles catches
   /// on the second tile's side face, and a disc rolling over it hops off the corner.
   bool refuseInternalEdges = true;
-  /// Islands of bodies at rest go to sleep: they are not integrated, their contacts are neither
-  /// recomputed nor solved, until an awake body touches them or the user pushes one.
-  bool sleeping = false;
+  /// Whether islands at rest sleep, and by which rule a body counts as resting.
+  Sleep sleep = Sleep::Off;
   /// m/s. A body slower than this (and sleepAngularSpeed) counts as resting. Box2D's 0.01: a
   /// hundredth of a body width of 1 m per second is invisible at 60 frames a second.
   double sleepLinearSpeed = 0.01;
@@ -44,15 +61,6 @@ struct WorldSettings {
   /// s. An island sleeps once every body in it has rested this long (Box2D's half a second:
   /// long enough that a body at the top of a bounce or a swing is not frozen).
   double timeToSleep = 0.5;
-  /// Keep a body that is speeding up awake, ours beyond Box2D: a body counts as resting only while
-  /// its speed and spin have grown by less than speedUpShare of the thresholds above since its
-  /// rest began; past that its rest begins again. A body that starts from rest and gathers speed
-  /// slowly is then not frozen before it reaches the thresholds: under Box2D's rule (off) a disc
-  /// rolling down 0.15° (a = 0.017 m/s²), a box on a slope 0.002 under its friction's limit or a
-  /// seesaw 0.5 % out of balance is still slower than them after timeToSleep, falls asleep and
-  /// never moves again, since a static body wakes nothing. With it on the slowest start that
-  /// escapes is ten times slower (docs/sleeping.md).
-  bool keepSpeedingUpAwake = true;
   /// The share of sleepLinearSpeed (sleepAngularSpeed) by which a resting body's speed (spin) may
   /// grow before it counts as speeding up: 1 mm/s and 0.2°/s. A settled pile's bodies jitter up
   /// by less than half of that (docs/design/sleeping-while-speeding-up.md).

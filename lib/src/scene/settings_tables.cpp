@@ -45,7 +45,7 @@ void readPreset(const toml::table& solver, Scene& scene) {
 
 /// A key a scene file may no longer use, and what to write instead.
 struct RetiredKey {
-  const char* solver;
+  const char* solver;  ///< the solver whose [solver] table had it, or "world" for [world]
   const char* key;
   const char* hint;
 };
@@ -62,10 +62,10 @@ constexpr RetiredKey kRetiredKeys[] = {
      "is now 'block_restitution': a two-point contact solved together is a block"},
     {"soft_step", "pair_restitution_condition_limit",
      "is now 'block_condition_limit', as in the other methods"},
-    {"micro", "warm_start", "is now 'warm_starting', its name in every method"},
+    {"micro", "warm_start", "is now 'warm_starting', as in soft step"},
     {"soft_step", "recycle_round_normals",
-     "is now 'renew_round_normals', with its meaning turned so that true turns the idea on: "
-     "recycle_round_normals = X is renew_round_normals = not X"},
+     "is now a value of 'recycling': recycle_round_normals = false is recycling = \"refined\", "
+     "true is \"box2d_v3\""},
     {"soft_step", "load_scaled_stiffness",
      "was removed: it made results worse (docs/soft-step.md, \"Removed switches\")"},
     {"soft_step", "load_acceleration",
@@ -74,13 +74,59 @@ constexpr RetiredKey kRetiredKeys[] = {
      "was removed: it made results worse (docs/soft-step.md, \"Removed switches\")"},
     {"soft_step", "block_normals_condition_limit",
      "was removed with block_normals (docs/soft-step.md, \"Removed switches\")"},
+    {"micro", "pair_moves",
+     "is now 'block_moves': a two-point contact solved together is a block, as in Box2D"},
+    {"micro", "pair_condition_limit", "is now 'block_condition_limit', as in the other methods"},
+    {"micro", "impulse_totals",
+     "is now a value of 'impulses': impulse_totals = false is impulses = \"separate\", true is "
+     "\"point_totals\" or more"},
+    {"micro", "pair_impulses",
+     "is now a value of 'impulses': pair_impulses = true is impulses = \"block\" (bounces "
+     "point by point) or \"block_with_bounces\"; false is \"point_totals\""},
+    {"micro", "pair_bounces",
+     "is now a value of 'impulses': pair_bounces = true is impulses = \"block_with_bounces\", "
+     "false is \"block\""},
+    {"sequential", "accumulate_impulses",
+     "is now a value of 'impulses': accumulate_impulses = false is impulses = \"clamped_each\", "
+     "true is \"accumulated\" or \"warm_started\""},
+    {"sequential", "warm_starting",
+     "is now a value of 'impulses': warm_starting = true is impulses = \"warm_started\", false "
+     "is \"accumulated\""},
+    {"reference", "backtrack",
+     "is now a value of 'cycling_safeguard': backtrack = true is cycling_safeguard = "
+     "\"backtrack\", false is \"judice_pires\""},
+    {"soft_step", "relax",
+     "is now 'relaxation': relax = false is relaxation = \"off\", true is "
+     "\"friction_in_relax\" (or \"friction_in_both\")"},
+    {"soft_step", "friction_in_relax",
+     "is now a value of 'relaxation': friction_in_relax = true is relaxation = "
+     "\"friction_in_relax\", false is \"friction_in_both\""},
+    {"soft_step", "contact_recycling",
+     "is now 'recycling': contact_recycling = false is recycling = \"off\", true is "
+     "\"refined\" (or \"box2d_v3\", v3's rule alone)"},
+    {"soft_step", "recycle_within_found_distance",
+     "is now a value of 'recycling': our rules beyond v3's are recycling = \"refined\", v3's "
+     "alone \"box2d_v3\""},
+    {"soft_step", "recycle_in_world_frame",
+     "is now a value of 'recycling': our rules beyond v3's are recycling = \"refined\", v3's "
+     "alone \"box2d_v3\""},
+    {"soft_step", "renew_round_normals",
+     "is now a value of 'recycling': our rules beyond v3's are recycling = \"refined\", v3's "
+     "alone \"box2d_v3\""},
+    {"world", "sleeping",
+     "is now 'sleep': sleeping = false is sleep = \"off\", true is "
+     "\"keep_speeding_up_awake\" (or \"box2d\", Box2D's rule alone)"},
+    {"world", "keep_speeding_up_awake",
+     "is now a value of 'sleep': keep_speeding_up_awake = true is sleep = "
+     "\"keep_speeding_up_awake\", false is \"box2d\""},
 };
 
-/// A renamed or removed key is one located error naming what to write instead.
-void rejectRetiredKeys(const toml::table& solver, const std::string& solverName) {
+/// A renamed or removed key is one located error naming what to write instead; `scope` is the
+/// table's solver, or "world".
+void rejectRetiredKeys(const toml::table& table, const std::string& scope) {
   for (const RetiredKey& retired : kRetiredKeys) {
-    if (solverName != retired.solver) continue;
-    if (const toml::node* node = solver.get(retired.key)) {
+    if (scope != retired.solver) continue;
+    if (const toml::node* node = table.get(retired.key)) {
       fail(node->source(), "'" + std::string(retired.key) + "' " + retired.hint);
     }
   }
@@ -91,6 +137,7 @@ void rejectRetiredKeys(const toml::table& solver, const std::string& solverName)
 void readWorld(const toml::table& root, Scene& scene) {
   const toml::table* world = findTable(root, "world");
   if (!world) return;
+  rejectRetiredKeys(*world, "world");
   readSettingsTable(*world, describe(scene.world), {"steps", "solver"}, "[world]");
   if (const toml::node* steps = world->get("steps")) {
     scene.steps = readSettingInteger(*steps, "steps", findSettingRange("world", "steps"));

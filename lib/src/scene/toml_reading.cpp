@@ -82,18 +82,31 @@ double readSettingNumber(const toml::node& node, std::string_view key,
   return value;
 }
 
+/// A choice's value: one of its names, or a located error listing them.
+void readChoice(const SettingChoice& choice, const toml::node& node, const std::string& key) {
+  if (!node.is_string()) failType(node, key, "a string (one of: " + choice.listed() + ")");
+  const std::string value = *node.value<std::string>();
+  const auto found = std::find(choice.names.begin(), choice.names.end(), value);
+  if (found == choice.names.end()) {
+    fail(node.source(),
+         "unknown value '" + value + "' for '" + key + "' (known: " + choice.listed() + ")");
+  }
+  choice.set(static_cast<int>(found - choice.names.begin()));
+}
+
 void readSetting(const SettingField& field, const toml::node& node) {
   std::visit(
-      [&](auto* target) {
-        using Target = std::remove_pointer_t<decltype(target)>;
-        if constexpr (std::is_same_v<Target, double>) {
+      [&](const auto& target) {
+        using Target = std::decay_t<decltype(target)>;
+        if constexpr (std::is_same_v<Target, double*>) {
           *target = readSettingNumber(node, field.name, field.range);
         }
-        if constexpr (std::is_same_v<Target, int>) {
+        if constexpr (std::is_same_v<Target, int*>) {
           *target = readSettingInteger(node, field.name, field.range);
         }
-        if constexpr (std::is_same_v<Target, bool>) *target = readBoolean(node, field.name);
-        if constexpr (std::is_same_v<Target, Vec2>) *target = readVec2(node, field.name);
+        if constexpr (std::is_same_v<Target, bool*>) *target = readBoolean(node, field.name);
+        if constexpr (std::is_same_v<Target, Vec2*>) *target = readVec2(node, field.name);
+        if constexpr (std::is_same_v<Target, SettingChoice>) readChoice(target, node, field.name);
       },
       field.value);
 }

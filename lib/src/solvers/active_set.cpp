@@ -37,13 +37,7 @@ Eigen::VectorXd freeVelocity(const IslandProblem& problem) {
   for (int i = 0; i < count; ++i) {
     const IslandPoint& point = problem.points[i];
     for (int axis = 0; axis < 2; ++axis) {
-      double v = point.staticVelocity[axis];
-      for (int side = 0; side < 2; ++side) {
-        const int body = point.body[side];
-        if (body < 0) continue;
-        v += point.jacobian[axis][side].dot(problem.velocity.segment<3>(3 * body));
-      }
-      free(2 * i + axis) = v;
+      free(2 * i + axis) = jacobianTimes(point, axis, problem.velocity, point.staticVelocity[axis]);
     }
     free(2 * i) -= point.targetNormalVelocity;
   }
@@ -460,7 +454,8 @@ double impulseScale(const Eigen::VectorXd& impulses, const Eigen::VectorXd& free
 class FlipRule {
  public:
   explicit FlipRule(const ActiveSetSettings& settings)
-      : blockFailures_(settings.blockFailures), backtrack_(settings.backtrack) {}
+      : blockFailures_(settings.blockFailures),
+        backtrack_(settings.cyclingSafeguard == CyclingSafeguard::Backtrack) {}
 
   void apply(const std::vector<Violation>& found, std::vector<ContactState>& states) {
     const int count = static_cast<int>(found.size());

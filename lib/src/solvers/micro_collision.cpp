@@ -114,7 +114,7 @@ void MicroCollisionSolver::prepare(const StepContext& context) {
 // (invertPairContactMatrix) is inverted the first time the pair is tried in a step.
 void MicroCollisionSolver::preparePairs() {
   pairs_.clear();
-  if (!settings_.pairImpulses || !settings_.impulseTotals) return;
+  if (settings_.impulses < MicroCollisionImpulses::Block) return;
   for (int first = 0; first + 1 < static_cast<int>(states_.size()); ++first) {
     if (otherPoint(first) != first + 1) continue;
     states_[first].pair = states_[first + 1].pair = static_cast<int>(pairs_.size());
@@ -150,7 +150,7 @@ void MicroCollisionSolver::invertPairContactMatrix(PointPair& pair) const {
   }
   // Hadamard's ratio: det K against the product of its diagonal (1 for a diagonal K).
   const double diagonal = k(0, 0) * k(1, 1) * k(2, 2);
-  if (!(diagonal > 0.0) || k.determinant() < diagonal / settings_.pairConditionLimit) {
+  if (!(diagonal > 0.0) || k.determinant() < diagonal / settings_.blockConditionLimit) {
     pair.status = PointPair::Status::Singular;
     return;
   }
@@ -335,7 +335,7 @@ bool MicroCollisionSolver::engaged(const PointState& state) const {
   const double separatingVelocity = normalPart(state.contactVelocity);
   const bool gapCloses = settings_.speculativeGaps &&
                          separatingVelocity * dt_ < state.penetration + settings_.touchingTolerance;
-  const bool pressed = settings_.impulseTotals && normalPart(state.totalImpulse) > 0.0;
+  const bool pressed = pointTotals() && normalPart(state.totalImpulse) > 0.0;
   return state.penetration >= -settings_.touchingTolerance || gapCloses || pressed;
 }
 
@@ -431,7 +431,7 @@ void MicroCollisionSolver::applyVelocityChange(const StepContext& context, int i
   ContactPoint& point = manifold.points[state.point];
   const Vec2 desired = desiredVelocityChange(state);
   const bool bounces = toBounce(state);
-  const Vec2 before = settings_.impulseTotals ? state.totalImpulse : Vec2::Zero();
+  const Vec2 before = pointTotals() ? state.totalImpulse : Vec2::Zero();
   const Vec2 impulse =
       newTotalImpulse(state, before, manifold.friction, desired, state.friction) - before;
   state.totalImpulse += impulse;
@@ -462,7 +462,7 @@ void MicroCollisionSolver::afterImpulse(const StepContext& context, const PointS
 // (as newTotalImpulse does for one point), and the two normal totals that still give both points
 // their wanted normal change: Σⱼ K(i, j)(afterⱼ − beforeⱼ) = changeᵢ for the two normal rows,
 // with after₂ = σμ (after₀ + after₁). False when that 2×2 system is as ill-conditioned as a pair
-// matrix may not be (pairConditionLimit, Hadamard's ratio as in invertPairContactMatrix).
+// matrix may not be (blockConditionLimit, Hadamard's ratio as in invertPairContactMatrix).
 bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen::Vector3d& before,
                                              const Eigen::Vector3d& change, double slide,
                                              Eigen::Vector3d& after) const {
@@ -474,7 +474,7 @@ bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen:
     right(i) = change(i) + k.row(i) * before;
   }
   const double diagonal = std::abs(system(0, 0) * system(1, 1));
-  if (!(std::abs(system.determinant()) > diagonal / settings_.pairConditionLimit)) return false;
+  if (!(std::abs(system.determinant()) > diagonal / settings_.blockConditionLimit)) return false;
   const Eigen::Vector2d normals = system.inverse() * right;
   after << normals(0), normals(1), slide * (normals(0) + normals(1));
   return true;
@@ -486,12 +486,12 @@ bool MicroCollisionSolver::slidingPairTotals(const PointPair& pair, const Eigen:
 // so each stays in its cone when the total does. Taken only when both points are engaged and
 // need resolving (a pair impulse where one corner is already resolved costs a settling pile more
 // than it saves, docs/design/micro-collision-cost.md), both are to bounce or
-// neither (with pairBounces; without it a bounce passes point by point, as in the cradle), and
-// the new totals push at both points, with static friction or, where static friction cannot hold
-// the pair, dynamic friction (slidingPairTotals); otherwise false, and the worst point is
-// resolved alone. A frictionless pair (friction off, or μ = 0) takes only the normal changes,
-// through the normal rows of the contact matrix. A pair that bounces takes each point to its
-// bounce on its closing velocity now, and both count as bounced.
+// neither (with MicroCollisionImpulses::BlockWithBounces; without it a bounce passes point by
+// point, as in the cradle), and the new totals push at both points, with static friction or, where
+// static friction cannot hold the pair, dynamic friction (slidingPairTotals); otherwise false, and
+// the worst point is resolved alone. A frictionless pair (friction off, or μ = 0) takes only the
+// normal changes, through the normal rows of the contact matrix. A pair that bounces takes each
+// point to its bounce on its closing velocity now, and both count as bounced.
 bool MicroCollisionSolver::applyPairChange(const StepContext& context, const PointState& worst,
                                            int iteration) {
   PointPair& pair = pairs_[worst.pair];
@@ -525,7 +525,7 @@ bool MicroCollisionSolver::applyPairChange(const StepContext& context, const Poi
 // wants.
 bool MicroCollisionSolver::pairNeedsChange(const PointsOfPair& points, bool bounce,
                                            std::array<Vec2, 2>& desired) const {
-  if (bounce && !settings_.pairBounces) return false;
+  if (bounce && settings_.impulses != MicroCollisionImpulses::BlockWithBounces) return false;
   for (int i = 0; i < 2; ++i) {
     const PointState& point = *points[i];
     if (!engaged(point) || point.bounced) return false;
@@ -686,7 +686,7 @@ int MicroCollisionSolver::worstPenetration() {
 // can be moved together; alone otherwise, as the lecture does.
 void MicroCollisionSolver::resolvePenetration(const StepContext& context, int index,
                                               int iteration) {
-  const int partner = settings_.pairMoves ? otherPoint(index) : -1;
+  const int partner = settings_.blockMoves ? otherPoint(index) : -1;
   if (partner >= 0 && resolvePair(context, index, partner, iteration)) return;
   resolvePoint(context, index, iteration);
 }
@@ -735,7 +735,7 @@ bool MicroCollisionSolver::resolvePair(const StepContext& context, int index, in
     torqueArmB[i] = cross(armB[i], normal);
   }
   const Mat2 k = normalCouplingMatrix(a, b, normal, armA, armB);
-  if (!isWellConditioned(k, settings_.pairConditionLimit)) return false;
+  if (!isWellConditioned(k, settings_.blockConditionLimit)) return false;
   const Vec2 x = solveTwoPointLcp(k, Vec2(-points[0]->penetration, -points[1]->penetration));
   const double turnA = -a.inverseInertia * (torqueArmA[0] * x(0) + torqueArmA[1] * x(1));
   const double turnB = b.inverseInertia * (torqueArmB[0] * x(0) + torqueArmB[1] * x(1));

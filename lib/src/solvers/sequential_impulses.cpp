@@ -48,7 +48,7 @@ void SequentialImpulseSolver::prepare(const StepContext& context) {
   prepareBodies(context);
   states_.clear();
   manifoldStates_.clear();
-  const bool warm = settings_.warmStarting && settings_.accumulateImpulses;
+  const bool warm = settings_.impulses == ImpulseAccumulation::WarmStarted;
   for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     const Manifold& manifold = context.manifolds[m];
     Body& a = context.bodies[manifold.bodyA];
@@ -90,7 +90,7 @@ void SequentialImpulseSolver::addManifoldState(const StepContext& context, int m
   ManifoldState state;
   state.load(contact, manifold);
   state.firstPoint = static_cast<int>(states_.size());
-  if (settings_.block.enabled && settings_.accumulateImpulses && contact.pointCount == 2) {
+  if (settings_.block.enabled && accumulated() && contact.pointCount == 2) {
     state.normalCoupling =
         normalCouplingMatrix(context.bodies[contact.bodyA], context.bodies[contact.bodyB],
                              contact.normal, contact.points[0].point, contact.points[1].point);
@@ -103,7 +103,7 @@ void SequentialImpulseSolver::addManifoldState(const StepContext& context, int m
 // Warm starting: the last step's totals (carried over by feature id) are applied up front, so the
 // sweeps only correct what changed. Without it the totals start from zero (set in prepare).
 void SequentialImpulseSolver::warmStart() {
-  if (!settings_.warmStarting || !settings_.accumulateImpulses) return;
+  if (settings_.impulses != ImpulseAccumulation::WarmStarted) return;
   for (const ManifoldState& manifold : manifoldStates_) {
     const Vec2 tangent = leftPerpendicular(manifold.normal);
     BodyPair bodies = loadBodies(manifold);
@@ -206,7 +206,7 @@ inline double SequentialImpulseSolver::solveFriction(const ManifoldState& manifo
 inline double SequentialImpulseSolver::normalImpulseChange(PointState& point,
                                                            double impulse) const {
   const double before = point.normalImpulse;
-  if (settings_.accumulateImpulses) {
+  if (accumulated()) {
     point.normalImpulse = std::max(before + impulse, 0.0);
   } else {
     point.normalImpulse = before + std::max(impulse, 0.0);
@@ -220,7 +220,7 @@ inline double SequentialImpulseSolver::tangentImpulseChange(PointState& point, d
                                                             double friction,
                                                             double normalImpulseThisSweep) const {
   const double before = point.tangentImpulse;
-  if (settings_.accumulateImpulses) {
+  if (accumulated()) {
     const double limit = friction * point.normalImpulse;
     point.tangentImpulse = std::clamp(before + impulse, -limit, limit);
   } else {

@@ -64,23 +64,6 @@ std::optional<Vec2> touchingNormal(const RoundFeature& a, const RoundFeature& b,
   return Vec2(atTouch / distance);
 }
 
-/// The relative velocity along d (unit) at a contact point whose torque arms, r × d from A's and
-/// B's centres, are torqueArmA and torqueArmB: (vB − vA)·d + ωB (rB × d) − ωA (rA × d).
-double velocityAlong(const SolverBody& a, const SolverBody& b, const Vec2& d, double torqueArmA,
-                     double torqueArmB) {
-  return (b.velocity - a.velocity).dot(d) + b.angularVelocity * torqueArmB -
-         a.angularVelocity * torqueArmA;
-}
-
-/// An impulse λ along d at that point: −λd to A, +λd to B.
-void applyAlong(SolverBody& a, SolverBody& b, const Vec2& d, double torqueArmA, double torqueArmB,
-                double impulse) {
-  a.velocity -= (a.inverseMass * impulse) * d;
-  a.angularVelocity -= a.inverseInertia * impulse * torqueArmA;
-  b.velocity += (b.inverseMass * impulse) * d;
-  b.angularVelocity += b.inverseInertia * impulse * torqueArmB;
-}
-
 }  // namespace
 
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
@@ -119,7 +102,7 @@ void SoftStepSolver::solveSubsteps(const StepContext& context) {
     warmStart();
     report_.residual = solve(context, true, substep);
     integratePositions(h);
-    if (settings_.relax) report_.residual = solve(context, false, substep);
+    if (settings_.relaxation != Relaxation::Off) report_.residual = solve(context, false, substep);
     report_.iterations = substep + 1;
   }
   if (settings_.restitution) applyRestitution(context);
@@ -290,12 +273,12 @@ void SoftStepSolver::warmStart() {
 }
 
 // One Gauss-Seidel sweep: the normal impulses of each contact, then its friction (with
-// frictionInRelax, only in the relax sweep). With bias the overlap is pushed out softly; without
-// (relax) only the velocities are made consistent. Each contact works on copies of its two
-// bodies' velocities, written back once it is solved, as Box2D v3's b2SolveContact does.
+// Relaxation::FrictionInRelax, only in the relax sweep). With bias the overlap is pushed out
+// softly; without (relax) only the velocities are made consistent. Each contact works on copies of
+// its two bodies' velocities, written back once it is solved, as Box2D v3's b2SolveContact does.
 // Returns the largest normal impulse change, the sweep's residual.
 double SoftStepSolver::solve(const StepContext& context, bool useBias, int substep) {
-  const bool friction = !useBias || !(settings_.frictionInRelax && settings_.relax);
+  const bool friction = !useBias || settings_.relaxation != Relaxation::FrictionInRelax;
   double largestChange = 0.0;
   for (Constraint& constraint : constraints_) {
     SubstepBody& bodyA = bodies_[constraint.bodyA];

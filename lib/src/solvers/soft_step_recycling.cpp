@@ -55,7 +55,7 @@ const FoundManifold* ContactRecycling::recordOf(const Manifold& previous,
 // its normal, ids, impulses and arms as found; only each point's overlap follows how far the
 // bodies moved since, the arms turned with them (a circle's not, with roundSurfaces), as the
 // substeps measure it. A normal that runs to a circle's centre turns as the bodies move past each
-// other, so such manifolds may be found anew every step (renewRoundNormals; v3 keeps them).
+// other, so such manifolds may be found anew every step (RecyclingRule::Refined; v3 keeps them).
 bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& bodies,
                             Manifold& kept) {
   const FoundManifold* found = recordOf(previous, bodies);
@@ -83,12 +83,13 @@ bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& b
 }
 
 bool ContactRecycling::mayKeep(const Manifold& manifold, const std::vector<Body>& bodies) const {
-  if (!settings_.contactRecycling || settings_.recycleDistance <= 0.0 || manifold.pointCount == 0) {
+  if (settings_.recycling == RecyclingRule::Off || settings_.recycleDistance <= 0.0 ||
+      manifold.pointCount == 0) {
     return false;
   }
   const Shape& a = bodies[manifold.bodyA].shape;
   const Shape& b = bodies[manifold.bodyB].shape;
-  return !settings_.renewRoundNormals || !normalRunsToCentre(a, b, manifold);
+  return !refined() || !normalRunsToCentre(a, b, manifold);
 }
 
 bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& previous,
@@ -118,7 +119,7 @@ bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& p
 // corner flatter than the largest turn, on an irregular polygon, could still land unseen.
 double ContactRecycling::recycleDistance(const FoundManifold& found,
                                          const Manifold& previous) const {
-  if (!settings_.recycleWithinFoundDistance || previous.pointCount == 2) {
+  if (!refined() || previous.pointCount == 2) {
     return settings_.recycleDistance;
   }
   return std::min(settings_.recycleDistance, found.pose.distance);
@@ -128,7 +129,7 @@ double ContactRecycling::recycleDistance(const FoundManifold& found,
 // or in the world's, where the recycled normal and arms are kept, so that a pair turning together
 // by θ at a distance d counts as moving d θ.
 double ContactRecycling::offsetMoved(const Body& a, const Body& b, const FoundPose& found) const {
-  if (!settings_.recycleInWorldFrame) {
+  if (!refined()) {
     return (a.toLocal(b.position) - found.relativePosition).norm();
   }
   return (b.position - a.position - found.rotationA * found.relativePosition).norm();

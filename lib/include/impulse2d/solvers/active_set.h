@@ -62,10 +62,11 @@ struct IslandPoint {
 // reference's own rows: any point type with `body` (−1 for a static body) and
 // `jacobian[axis][side]`, on vectors of 3 per body (vx, vy, ω).
 
-/// J u along `axis`: the relative velocity that body velocities (or changes) u give the point.
+/// J u along `axis`: the relative velocity that body velocities (or changes) u give the point,
+/// added to `start` (the part of it from static bodies, if any).
 template <typename Point>
-double jacobianTimes(const Point& point, int axis, const Eigen::VectorXd& u) {
-  double v = 0.0;
+double jacobianTimes(const Point& point, int axis, const Eigen::VectorXd& u, double start = 0.0) {
+  double v = start;
   for (int side = 0; side < 2; ++side) {
     const int body = point.body[side];
     if (body >= 0) v += point.jacobian[axis][side].dot(u.segment<3>(3 * body));

@@ -62,6 +62,24 @@ Vec2 relativeVelocity(const Velocities& a, const Velocities& b, const Vec2& rA, 
   return pointVelocity(b, rB) - pointVelocity(a, rA);
 }
 
+/// J·u of one contact row: the relative velocity (B's material minus A's) along unit d at a point
+/// whose torque arms, r × d from A's and B's centres, are torqueArmA and torqueArmB:
+/// (vB − vA)·d + ωB (rB × d) − ωA (rA × d). The row (−d, −rA × d, d, rB × d) is the Jacobian.
+inline double velocityAlong(const SolverBody& a, const SolverBody& b, const Vec2& d,
+                            double torqueArmA, double torqueArmB) {
+  return (b.velocity - a.velocity).dot(d) + b.angularVelocity * torqueArmB -
+         a.angularVelocity * torqueArmA;
+}
+
+/// An impulse λ along that row, M⁻¹Jᵀλ: −λd to A, +λd to B, and their turns λ (r × d)/I.
+inline void applyAlong(SolverBody& a, SolverBody& b, const Vec2& d, double torqueArmA,
+                       double torqueArmB, double impulse) {
+  a.velocity -= (a.inverseMass * impulse) * d;
+  a.angularVelocity -= a.inverseInertia * impulse * torqueArmA;
+  b.velocity += (b.inverseMass * impulse) * d;
+  b.angularVelocity += b.inverseInertia * impulse * torqueArmB;
+}
+
 /// The impulse P at arms rA, rB of two solver bodies: −P to A, +P to B.
 template <typename Velocities>
 void applyPairImpulse(Velocities& a, Velocities& b, const Vec2& rA, const Vec2& rB, const Vec2& P) {
@@ -179,7 +197,8 @@ Mat2 normalCouplingMatrix(const Masses& a, const Masses& b, const Vec2& normal,
 /// normal (< 0 closing), vt on the tangent.
 inline double relativeVelocity(const Body& a, const Body& b, const Vec2& point,
                                const Vec2& direction) {
-  return (b.velocityAt(point) - a.velocityAt(point)).dot(direction);
+  return relativeVelocity<Body>(a, b, Vec2(point - a.position), Vec2(point - b.position))
+      .dot(direction);
 }
 
 /// The relative velocity of B against A at a world point in contact coordinates:

@@ -39,6 +39,9 @@ class MicroCollisionSolver : public ContactSolver {
   const MicroCollisionSettings& settings() const { return settings_; }
 
  private:
+  /// Whether an update's impulses at a point add up to one micro-collision (impulse totals).
+  bool pointTotals() const { return settings_.impulses >= MicroCollisionImpulses::PointTotals; }
+
   /// What a penetration move changes of one body: its pose, the rotation as cosine and sine.
   struct Pose {
     Vec2 position = Vec2::Zero();

@@ -5,6 +5,24 @@
 
 namespace impulse2d {
 
+/// What one micro-collision is made of; each value keeps the ones before it.
+enum class MicroCollisionImpulses {
+  /// Every impulse is the lecture's rule on its own, applied only to a closing point.
+  Separate,
+  /// Impulse totals per update: the impulses one update applies at a point add up to one
+  /// micro-collision whose total can push but never pull, and a pushed point is resolved again
+  /// when pushed too hard.
+  PointTotals,
+  /// Block impulses: the worst point of a two-point manifold whose points both need resolving is
+  /// resolved with its other point in one micro-collision (the pair's 3×3 contact matrix; sliding
+  /// on the friction cone beyond it), so a box's corners do not rock each other. A bounce passes
+  /// point by point, as along the cradle.
+  Block,
+  /// Block bounces too: a two-point manifold whose points both bounce bounces as one
+  /// micro-collision, so a box landing flat leaves straight up without spinning.
+  BlockWithBounces,
+};
+
 /// The lecture's micro-collision resolver (lecture 3.6, Millington ch. 14-15).
 struct MicroCollisionSettings {
   /// Remove the velocity built up by the last update's acceleration from the bounce target:
@@ -20,7 +38,7 @@ struct MicroCollisionSettings {
   /// smaller than this is none (the point is not marked as bounced).
   double velocityEpsilon = 1e-4;
   /// m. Penetration resolution stops when no contact penetrates deeper than this: resting bodies
-  /// settle at up to this overlap. With pair moves 1e-4 keeps a stack straight at half the cost
+  /// settle at up to this overlap. With block moves 1e-4 keeps a stack straight at half the cost
   /// of 1e-5 (the lecture preset, one corner at a time, needs 1e-5; Millington's engine uses
   /// 0.01; docs/micro-collisions.md).
   double positionEpsilon = 1e-4;
@@ -45,27 +63,17 @@ struct MicroCollisionSettings {
   /// Speculative gaps: a point with a gap counts when the gap would close within the step, and
   /// without a bounce may close it, no more. Off: only touching or penetrating points count.
   bool speculativeGaps = true;
-  /// Impulse totals per update: the impulses one update applies at a point add up to one
-  /// micro-collision whose total can push but never pull, and a pushed point is resolved again
-  /// when pushed too hard. Off: every impulse is the lecture's rule on its own, applied only to
-  /// a closing point.
-  bool impulseTotals = true;
+  /// What one micro-collision at a point is made of.
+  MicroCollisionImpulses impulses = MicroCollisionImpulses::BlockWithBounces;
   /// Worst first also counts, at a point already pushed, being pushed too hard and (while its
   /// friction is static) the slip its neighbours left. Off: only the normal need, as the lecture.
   bool severityCountsPushedPoints = true;
   /// Warm starting: each point starts the step from the totals it ended the last with (by
   /// feature id), so resting weight need not pass down a stack anew every step. False: zero.
   bool warmStarting = true;
-  /// Pair impulses: the worst point of a two-point manifold whose points both need resolving is
-  /// resolved with its other point in one micro-collision (the pair's 3×3 contact matrix;
-  /// sliding on the friction cone beyond it), so a box's corners do not rock each other.
-  bool pairImpulses = true;
-  /// Pair bounces: with pair impulses, a two-point manifold whose points both bounce bounces as
-  /// one micro-collision, so a box landing flat leaves straight up without spinning.
-  bool pairBounces = true;
-  /// Pair moves: a two-point manifold's penetrations are removed together by one move of each
+  /// Block moves: a two-point manifold's penetrations are removed together by one move of each
   /// body (the 2×2 block solve), so resolving one corner does not drive the other deeper.
-  bool pairMoves = true;
+  bool blockMoves = true;
   /// Past the cap while progressing: a step at velocityIterationsPerContact goes on while the
   /// waiting points' total velocity change still falls by minimumProgress over progressRounds
   /// rounds, up to velocityIterationsPerContactLimit (a 40-row pyramid's first step needs 321).
@@ -80,7 +88,7 @@ struct MicroCollisionSettings {
   /// A pair is resolved together only when its matrix is this well conditioned: for a move,
   /// k₀₀² < limit · det K (Box2D 2.4's test); for an impulse, det K > (product of K's diagonal) /
   /// limit. A narrower pair (two points almost at one place) is resolved one point at a time.
-  double pairConditionLimit = 1000.0;
+  double blockConditionLimit = 1000.0;
 
   /// The plain method of the lecture: every refinement above off, and positionEpsilon 1e-5
   /// (one corner at a time needs the tighter epsilon to settle level).

@@ -24,6 +24,18 @@ struct LemkeSettings {
   double harrisTolerance = 1e-11;
 };
 
+/// The active set's safeguard against cycling: what follows a flip that does not lower the number
+/// of violated points below the best seen.
+enum class CyclingSafeguard {
+  /// Júdice–Pires: blockFailures more block flips from where it is, then one point at a time.
+  JudicePires,
+  /// Go back to the best states and flip half as many of their violators, the worst first, then
+  /// a quarter, … down to one, then one at a time. From rest a 40-row pyramid's first step falls
+  /// to 9 violated points in 7 factorizations, and one more block flip from there raises it to
+  /// 316.
+  Backtrack,
+};
+
 /// The active-set method (active_set.h) that solves the reference's large islands.
 struct ActiveSetSettings {
   /// Projected Gauss–Seidel sweeps from last step's impulses that guess each point's state
@@ -41,15 +53,11 @@ struct ActiveSetSettings {
   bool warmStates = true;
   /// The method gives up (and says so) after this many factorizations.
   int maxFactorizations = 200;
-  /// Block flips in a row that do not lower the number of violated points before the method
-  /// flips one point at a time (Júdice–Pires' safeguard against cycling).
+  /// What the method does after a flip that does not lower the number of violated points.
+  CyclingSafeguard cyclingSafeguard = CyclingSafeguard::Backtrack;
+  /// Under Júdice–Pires: block flips in a row that do not lower the number of violated points
+  /// before the method flips one point at a time.
   int blockFailures = 3;
-  /// A flip that does not lower the number of violated points below the best seen goes back to
-  /// the best states and flips half as many of their violators, the worst first, then a
-  /// quarter, … down to one (instead of blockFailures more block flips from where it is). From
-  /// rest a 40-row pyramid's first step falls to 9 violated points in 7 factorizations, and one
-  /// more block flip from there raises it to 316. Off: Júdice–Pires as above.
-  bool backtrack = true;
   /// A separated point that the answer closes while it slips takes up sliding against its slip
   /// (λt = ∓μλn), as a contact that starts while slipping does, instead of sticking; a slide
   /// the next answer reverses makes it stick. Forcing such a point to stick can contradict other

@@ -5,6 +5,17 @@
 
 namespace impulse2d {
 
+/// Accumulated impulses and warm starting (Box2D-Lite's two switches); each value keeps the ones
+/// before it.
+enum class ImpulseAccumulation {
+  /// Each impulse clamped on its own, as the text first states the method.
+  ClampedEach,
+  /// Accumulated impulses: each contact's running total of impulse is clamped, not each impulse.
+  Accumulated,
+  /// Warm starting: each step begins from the last step's totals, matched by feature id.
+  WarmStarted,
+};
+
 /// Sequential impulses ("Explaining the rigid body solver", Box2D-Lite).
 struct SequentialImpulseSettings {
   /// Most sweeps over all contacts per step. A stack of n boxes starting from rest needs about n
@@ -15,10 +26,8 @@ struct SequentialImpulseSettings {
   /// largest normal total: the answer has converged (at 1e-6 the figures equal full sweeps' to
   /// three digits; docs/sequential-impulses.md). 0: always velocityIterations, the text's method.
   double convergedImpulseChange = 1e-6;
-  /// Clamp each contact's running total of impulse rather than each impulse.
-  bool accumulateImpulses = true;
-  /// Begin each step from the last step's totals, matched by feature id (needs accumulation).
-  bool warmStarting = true;
+  /// What each contact's impulse is clamped as, and where each step begins.
+  ImpulseAccumulation impulses = ImpulseAccumulation::WarmStarted;
   /// Bias and bounce targets.
   ContactTargetSettings targets;
   /// The position pass after integration.

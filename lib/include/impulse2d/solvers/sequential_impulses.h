@@ -43,6 +43,9 @@ class SequentialImpulseSolver : public ContactSolver {
   const SequentialImpulseSettings& settings() const { return settings_; }
 
  private:
+  /// Whether each contact's running total is clamped (accumulated impulses), not each impulse.
+  bool accumulated() const { return settings_.impulses != ImpulseAccumulation::ClampedEach; }
+
   /// Per contact point, computed once before the sweeps (Box2D-Lite's PreStep).
   struct PointState {
     /// The arms' torque per unit impulse along the normal and the tangent, r × n and r × t for
@@ -76,15 +79,11 @@ class SequentialImpulseSolver : public ContactSolver {
     /// The relative velocity (B's material minus A's) at a point, along `direction`, from the
     /// arms' torques along it (PointState).
     double relativeVelocity(const Vec2& direction, double torqueArmA, double torqueArmB) const {
-      return (b.velocity - a.velocity).dot(direction) + b.angularVelocity * torqueArmB -
-             a.angularVelocity * torqueArmA;
+      return velocityAlong(a, b, direction, torqueArmA, torqueArmB);
     }
     /// +λ·direction to B, −λ·direction to A at a point: Δv = λ·direction/m, Δω = λ (r × d)/I.
     void applyImpulse(const Vec2& direction, double torqueArmA, double torqueArmB, double impulse) {
-      a.velocity -= (a.inverseMass * impulse) * direction;
-      a.angularVelocity -= a.inverseInertia * impulse * torqueArmA;
-      b.velocity += (b.inverseMass * impulse) * direction;
-      b.angularVelocity += b.inverseInertia * impulse * torqueArmB;
+      applyAlong(a, b, direction, torqueArmA, torqueArmB, impulse);
     }
     double relativeNormalVelocity(const PointState& point, const Vec2& normal) const {
       return relativeVelocity(normal, point.normalTorqueArmA, point.normalTorqueArmB);

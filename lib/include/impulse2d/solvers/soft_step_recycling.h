@@ -44,7 +44,7 @@ struct FoundManifold {
 /// found. The world asks it pair by pair, in the order of its manifolds (by bodyA, then bodyB).
 class ContactRecycling : public ManifoldKeeping {
  public:
-  /// Recycling as `settings` ask (contactRecycling and the recycle* switches).
+  /// Recycling as `settings` ask (its recycling rule and distances).
   explicit ContactRecycling(const SoftStepSettings& settings) : settings_(settings) {}
 
   void startFinding() override;
@@ -53,7 +53,8 @@ class ContactRecycling : public ManifoldKeeping {
   void found(const Manifold& manifold, const std::vector<Body>& bodies, double distance) override;
 
   /// Whether a manifold like this one may be kept at all: recycling is on, and its normal is not
-  /// one that is found anew every step (renewRoundNormals). One that may not was found this step.
+  /// one that is found anew every step (RecyclingRule::Refined). One that may not was found this
+  /// step.
   bool mayKeep(const Manifold& manifold, const std::vector<Body>& bodies) const;
   /// How the world's manifold of that pair was found (null if it was found without this), from
   /// the last call of startFinding on. A caller walking the manifolds in the world's order passes
@@ -61,6 +62,8 @@ class ContactRecycling : public ManifoldKeeping {
   const FoundManifold* foundManifold(const Manifold& manifold, std::size_t& from) const;
 
  private:
+  /// Whether our rules beyond v3's apply (RecyclingRule::Refined).
+  bool refined() const { return settings_.recycling == RecyclingRule::Refined; }
   /// The record of `previous`, found in the last substep's records; the records passed on the way
   /// that the world keeps (their bodies all sleep) are carried over as they are.
   const FoundManifold* recordOf(const Manifold& previous, const std::vector<Body>& bodies);

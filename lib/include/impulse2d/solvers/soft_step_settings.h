@@ -5,6 +5,34 @@
 
 namespace impulse2d {
 
+/// The relax solve: a second solve without bias after the positions moved, taking back the
+/// velocity the bias added (v3's relax).
+enum class Relaxation {
+  /// No relax solve: the body overshoots.
+  Off,
+  /// A relax solve, friction in both solves (Solver2D, v3.0).
+  FrictionInBoth,
+  /// A relax solve, friction in it only, against the impulses left once the bias is gone (v3
+  /// since 2025).
+  FrictionInRelax,
+};
+
+/// Contact recycling: a manifold is kept, normal and arms as found, while the bodies move little
+/// (v3's default), so a leaning box's Jacobians do not turn and a 40-box stack stands.
+enum class RecyclingRule {
+  /// Every manifold is found anew every step.
+  Off,
+  /// v3's rule: found anew once the bodies moved past recycleDistance or recycleLargestTurn.
+  Box2dV3,
+  /// Ours beyond v3, each for a failure of its rule: a one-point manifold is also found anew
+  /// once the bodies moved as far as the contact distance it was found within, so a pivoting
+  /// polygon's next vertex is not missed; the distance is measured in the world's frame, where
+  /// the kept normal and arms live, so a pair turning together counts as moving; and a manifold
+  /// whose normal runs to a circle's centre is found anew every step, since that normal turns as
+  /// the bodies move past each other.
+  Refined,
+};
+
 /// Soft step (Box2D v3, Catto's Solver2D solve_soft_step; docs/soft-step.md): substeps of soft
 /// contact constraints, each a spring-damper of a set stiffness and damping, then relaxation and
 /// a restitution pass. Measurements behind each default are in docs/soft-step.md.
@@ -29,21 +57,16 @@ struct SoftStepSettings {
   /// Soft constraints from hertz and damping; false: the rigid limit, each substep asks the
   /// whole overlap back.
   bool softContacts = true;
-  /// A second solve without bias after the positions moved, taking back the velocity the bias
-  /// added (v3's relax); false: the body overshoots.
-  bool relax = true;
-  /// Friction in the relax solve only, against the impulses left once the bias is gone (v3 since
-  /// 2025); false: in both solves (Solver2D, v3.0).
-  bool frictionInRelax = true;
+  /// Whether a relax solve follows the biased one, and which of them solves friction.
+  Relaxation relaxation = Relaxation::FrictionInRelax;
   /// Each step starts from the last step's impulses (by feature id), each substep from the last
   /// substep's; false: from zero.
   bool warmStarting = true;
   /// Speculative contacts whatever the world says, as v3 always has them, so a falling body is
   /// stopped at the surface instead of found overlapping (or tunnelling).
   bool speculativeContacts = true;
-  /// Contact recycling: a manifold is kept, normal and arms as found, while the bodies move
-  /// little (v3's default), so a leaning box's Jacobians do not turn and a 40-box stack stands.
-  bool contactRecycling = true;
+  /// Whether a manifold is kept as found while the bodies move little, and by which rules.
+  RecyclingRule recycling = RecyclingRule::Refined;
   /// m. A manifold is found anew once B has moved this far relative to A, counting the turn at
   /// the farther-reaching body's extent (v3: 10 × its 0.005 m slop).
   double recycleDistance = 0.05;
@@ -66,15 +89,6 @@ struct SoftStepSettings {
   /// their velocities, so an oblique round impact leaves at Newton's angles and speeds. Default
   /// on; off (v3, the box2d_v3 preset) the normal is the line of centres where it was found.
   bool speculativeAtTouch = true;
-  /// A one-point manifold is also found anew once the bodies moved as far as the contact
-  /// distance it was found within, so a pivoting polygon's next vertex is not missed.
-  bool recycleWithinFoundDistance = true;
-  /// The recycle distance is measured in the world's frame, where the kept normal and arms live,
-  /// so a pair turning together counts as moving.
-  bool recycleInWorldFrame = true;
-  /// A manifold whose normal runs to a circle's centre is found anew every step, since that
-  /// normal turns as the bodies move past each other.
-  bool renewRoundNormals = true;
   /// A two-point manifold whose points both bounce gets its restitution impulses as one exact
   /// 2×2 block (two_point_block.h), so a flat box leaves straight up.
   BlockSolveSettings restitutionBlock;
