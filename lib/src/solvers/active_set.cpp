@@ -804,9 +804,9 @@ ActiveSetAnswer flipUntilSolved(const IslandProblem& problem, const Eigen::Vecto
   while (answer.factorizations < settings.maxFactorizations) {
     if (visited.cycles(states)) {
       return failedAnswer(answer, "active set: cycling (the same states solved " +
-                                std::to_string(kVisitsBeforeCycling + 1) +
-                                " times by factorization " + std::to_string(answer.factorizations) +
-                                ")");
+                                      std::to_string(kVisitsBeforeCycling + 1) +
+                                      " times by factorization " +
+                                      std::to_string(answer.factorizations) + ")");
     }
     const GuessSystem system(problem, states, diagonal, free, settings.regularization, neighbours);
     const std::optional<Eigen::VectorXd> impulses = solveGuessSystem(
@@ -815,8 +815,8 @@ ActiveSetAnswer flipUntilSolved(const IslandProblem& problem, const Eigen::Vecto
     answer.factorizations = kept.factorizations() - factorizationsBefore;
     if (!impulses) {
       return failedAnswer(answer, "active set: singular system at factorization " +
-                                std::to_string(answer.factorizations) + " (" + kept.lastError() +
-                                ")");
+                                      std::to_string(answer.factorizations) + " (" +
+                                      kept.lastError() + ")");
     }
     answer.impulses = *impulses;
     const std::vector<Violation> found =
@@ -825,7 +825,7 @@ ActiveSetAnswer flipUntilSolved(const IslandProblem& problem, const Eigen::Vecto
     flips.apply(found, states);
   }
   return failedAnswer(answer, "active set: factorization limit of " +
-                            std::to_string(settings.maxFactorizations) + " reached");
+                                  std::to_string(settings.maxFactorizations) + " reached");
 }
 
 }  // namespace
@@ -835,7 +835,8 @@ ActiveSetAnswer solveActiveSet(const IslandProblem& problem, const ActiveSetSett
   const Eigen::VectorXd diagonal = delassusDiagonal(problem);
   const Eigen::VectorXd free = freeVelocity(problem);
   if (!free.allFinite() || !diagonal.allFinite()) {
-    return failedAnswer({}, "active set: the problem is not finite (a velocity or mass overflowed)");
+    return failedAnswer({},
+                        "active set: the problem is not finite (a velocity or mass overflowed)");
   }
   return flipUntilSolved(problem, free, diagonal, firstGuess(problem, free, diagonal, settings),
                          settings, kept);
