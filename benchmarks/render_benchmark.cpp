@@ -1,7 +1,9 @@
 // How long one 960×540 frame of a 210-box pyramid (pyramid20) takes to draw with every overlay on
 // and write as a PNG, encoding included (target: at most 10 ms median; the renderer before Cairo
 // is compared in docs/design/drawing-with-cairo.md). The pyramid stands for one simulated second
-// first, so every contact carries its impulses.
+// first, so every contact carries its impulses. Then the same frame as the browser sandbox makes
+// it: the marks (render/marks.h) and their encoding for the page (web/mark_encoding.h), which
+// callgrind counts alone with --toggle-collect='*pageFrame*'.
 //
 //   render_benchmark [frame.png]    (writes the benchmark frame there, to look at)
 #include <algorithm>
@@ -12,7 +14,9 @@
 #include <vector>
 
 #include "impulse2d/render/frame.h"
+#include "impulse2d/render/marks.h"
 #include "impulse2d/scene/scene.h"
+#include "mark_encoding.h"
 
 using namespace impulse2d;
 using Clock = std::chrono::steady_clock;
@@ -47,6 +51,21 @@ double milliseconds(Clock::duration duration) {
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   return values[values.size() / 2];
+}
+
+/// The sandbox's frame of the world: its marks, encoded for the page; returns the path data's
+/// length. Kept out of line so callgrind can count exactly this.
+[[gnu::noinline]] std::size_t pageFrame(render::FrameRenderer& renderer, const World& world,
+                                        const std::string& scene,
+                                        const render::RenderSettings& settings) {
+  render::MarkList marks([](const std::string& text, double size) {
+    return 0.6 * size * double(text.size());  // the page measures text; any width will do here
+  });
+  {
+    render::Drawing drawing(marks);
+    renderer.drawOnto(drawing, render::captureFrame(world, scene, settings));
+  }
+  return sandbox::encodeMarks(marks.marks()).paths.size();
 }
 
 }  // namespace
@@ -87,5 +106,17 @@ int main(int argc, char** argv) {
       median(totalTimes), median(processorTimes), renders, targetMilliseconds);
   std::printf("frame: %s, %ju bytes\n", path.c_str(),
               std::uintmax_t(std::filesystem::file_size(path)));
+
+  std::vector<double> pageTimes;
+  std::size_t pathBytes = 0;
+  for (int i = 0; i < renders; ++i) {
+    const Clock::time_point start = Clock::now();
+    pathBytes = pageFrame(renderer, *world, scene.name, settings);
+    pageTimes.push_back(milliseconds(Clock::now() - start));
+  }
+  std::printf(
+      "the sandbox's frame: marks and their encoding for the page, median %.2f ms (%zu "
+      "bytes of path data)\n",
+      median(pageTimes), pathBytes);
   return 0;
 }

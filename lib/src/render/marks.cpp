@@ -3,6 +3,7 @@
 #include "impulse2d/render/marks.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -102,16 +103,30 @@ std::vector<Run> parseMarkup(const std::string& markup) {
   return runs;
 }
 
+/// The directions of a dot's corners after the first, (cos, sin) of 2πk/kSmallCircleSides:
+/// computed once, as a pyramid's frame draws a thousand dots.
+const std::array<Vec2, kSmallCircleSides - 1>& dotDirections() {
+  static const std::array<Vec2, kSmallCircleSides - 1> directions = [] {
+    std::array<Vec2, kSmallCircleSides - 1> result;
+    for (int k = 1; k < kSmallCircleSides; ++k) {
+      const double angle = 2.0 * kPi * k / kSmallCircleSides;
+      result[std::size_t(k - 1)] = Vec2(std::cos(angle), std::sin(angle));
+    }
+    return result;
+  }();
+  return directions;
+}
+
 /// A circle's outline: a dot as a polygon (at this size it looks the same, with a third of the
 /// edges), a larger circle as itself.
 Outline circleOutline(const Vec2& centre, double radius) {
   if (radius > kSmallCircle) return {{centre}, radius};
   Outline dot;
+  dot.points.reserve(kSmallCircleSides);
   dot.points.push_back(Vec2(centre.x() + radius, centre.y()));
-  for (int k = 1; k < kSmallCircleSides; ++k) {
-    const double angle = 2.0 * kPi * k / kSmallCircleSides;
+  for (const Vec2& direction : dotDirections()) {
     dot.points.push_back(
-        Vec2(centre.x() + radius * std::cos(angle), centre.y() + radius * std::sin(angle)));
+        Vec2(centre.x() + radius * direction.x(), centre.y() + radius * direction.y()));
   }
   return dot;
 }
@@ -145,11 +160,14 @@ Drawing::~Drawing() {
   flush();
 }
 
-void Drawing::log(DrawnShape::Kind kind, std::vector<Vec2> points, Color colour, double size,
-                  std::string text) {
-  if (log_ != nullptr) {
-    log_->push_back({kind, role_, std::move(points), colour, size, std::move(text)});
-  }
+void Drawing::log(DrawnShape::Kind kind, const std::vector<Vec2>& points, Color colour, double size,
+                  const std::string& text) {
+  if (log_ != nullptr) log_->push_back({kind, role_, points, colour, size, text});
+}
+
+void Drawing::log(DrawnShape::Kind kind, std::initializer_list<Vec2> points, Color colour,
+                  double size, const std::string& text) {
+  if (log_ != nullptr) log(kind, std::vector<Vec2>(points), colour, size, text);
 }
 
 void Drawing::add(bool stroke, Color colour, double width, Outline outline) {
@@ -205,10 +223,10 @@ void Drawing::ring(const Vec2& centre, double radius, Color colour, double width
 }
 
 void Drawing::rectangle(const Vec2& corner, const Vec2& size, Color colour) {
-  std::vector<Vec2> corners{corner, corner + Vec2(size.x(), 0.0), corner + size,
-                            corner + Vec2(0.0, size.y())};
-  add(false, colour, 0.0, {corners});
-  log(DrawnShape::Kind::Polygon, std::move(corners), colour, 0.0);
+  Outline shape{
+      {corner, corner + Vec2(size.x(), 0.0), corner + size, corner + Vec2(0.0, size.y())}};
+  log(DrawnShape::Kind::Polygon, shape.points, colour, 0.0);
+  add(false, colour, 0.0, std::move(shape));
 }
 
 void Drawing::line(const Vec2& from, const Vec2& to, double width, Color colour) {

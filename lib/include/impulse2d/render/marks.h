@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -163,8 +164,12 @@ class Drawing {
     std::vector<Outline> outlines;
   };
   void add(bool stroke, Color colour, double width, Outline outline);
-  void log(DrawnShape::Kind kind, std::vector<Vec2> points, Color colour, double size,
-           std::string text = "");
+  /// Records one call in the log, when there is one (a frame drawn for the screen builds none
+  /// of what it would record).
+  void log(DrawnShape::Kind kind, const std::vector<Vec2>& points, Color colour, double size,
+           const std::string& text = "");
+  void log(DrawnShape::Kind kind, std::initializer_list<Vec2> points, Color colour, double size,
+           const std::string& text = "");
 
   std::unique_ptr<Canvas> owned_;  ///< the canvas of a picture drawn into
   Canvas* canvas_ = nullptr;
