@@ -19,6 +19,9 @@ const page = {
   error: "",
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
   plotted: 0,        // when the plots were last drawn (performance.now())
+  painter: null,     // the worker painting the views (web/painter.js), where there is one
+  painting: 0,       // frames handed to the painter and not yet painted
+  behind: false,     // a frame was left out while the painter had its next one waiting
 };
 window.sandboxPage = page;
 
@@ -69,6 +72,7 @@ function readAddress() {
     preset: words.get("preset") || "",
     compare: words.get("compare") || "",
     sets: words.getAll("set"),
+    painter: words.get("painter") || "",  // "page": paint on the page's thread (web-test --measure)
   };
 }
 
@@ -158,10 +162,28 @@ function stepOnce() {
   return true;
 }
 
-/// Paints each run's frame in its view.
+/// The frames the painter may hold per view: the one it paints and the next, made by the page's
+/// thread meanwhile, so the two threads work at once.
+const PAINTER_QUEUE = 2;
+
+/// Paints each run's frame in its view: by the painter (web/painter.js) where the browser can
+/// hand a canvas to a worker, else here. While the painter has a frame waiting, the newest state
+/// is painted when it takes that one up: a slow painter shows fewer frames, never late ones.
 function draw() {
   if (page.error) return;
-  activeRuns().forEach((run, k) => {
+  const runs = activeRuns();
+  if (page.painter && page.painting >= PAINTER_QUEUE * runs.length) {
+    page.behind = true;
+    return;
+  }
+  runs.forEach((run, k) => {
+    if (page.painter) {
+      const marks = run.frame();
+      ++page.painting;
+      page.painter.postMessage({ view: k, width: run.width(), height: run.height(), marks },
+                               [marks.numbers.buffer, marks.paths.buffer]);
+      return;
+    }
     const canvas = k === 0 ? $("view") : $("view2");
     if (canvas.width !== run.width() || canvas.height !== run.height()) {
       canvas.width = run.width();
@@ -183,7 +205,27 @@ function draw() {
     plot();
     page.plotted = now;
   }
-  ++page.framesDrawn;
+  if (!page.painter) ++page.framesDrawn;
+}
+
+/// Hands the views' canvases to the painter, where the browser can and the address does not ask
+/// for painting on the page (painter=page, which scripts/web-test --measure compares).
+function startPainter(where) {
+  const views = [$("view"), $("view2")];
+  if (!window.OffscreenCanvas || !views[0].transferControlToOffscreen || where === "page") return;
+  page.painter = new Worker("painter.js");
+  views.forEach((view, k) => {
+    const canvas = view.transferControlToOffscreen();
+    page.painter.postMessage({ view: k, canvas }, [canvas]);
+  });
+  page.painter.onmessage = ({ data }) => {
+    --page.painting;
+    if (data.view === 0) ++page.framesDrawn;
+    if (page.behind) {
+      page.behind = false;
+      draw();
+    }
+  };
 }
 
 /// Leaves the views the window's height below their top, less their captions: the whole frame
@@ -420,6 +462,7 @@ async function start() {
   Object.assign(page, { solver: wanted.solver, preset: wanted.preset, compare: wanted.compare,
                         sets: wanted.sets });
   wire();
+  startPainter(wanted.painter);
   window.addEventListener("resize", fitViews);
   configure();
   fitViews();
