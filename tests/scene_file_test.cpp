@@ -204,7 +204,7 @@ TEST_CASE("[solver] preset = \"box2d_2_4\" sets Box2D 2.4.1's contact solver",
   CHECK(sequential.positionPass.iterations == 3);
   CHECK(sequential.frictionFirst);
   CHECK_FALSE(sequential.targets.penetrationBias);
-  CHECK_FALSE(sequential.blockPositionCorrection);
+  CHECK_FALSE(sequential.positionPass.blockSolve);
   CHECK(errorOf("[world]\nsolver = \"reference\"\n[solver]\npreset = \"box2d_2_4\"\n" +
                 std::string(kOneBall)) ==
         "bad.toml:4:10: unknown preset 'box2d_2_4' for solver 'reference' (known: none; i2d "

@@ -177,7 +177,9 @@ void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
                  {"position_correction_factor", &s.correctionFactor, "", closed(0.0, 1.0),
                   "fraction of the penetration beyond the slop removed per sweep"},
                  {"max_position_correction", &s.maxCorrection, "m", closed(0.0, 10.0),
-                  "largest correction at one contact in one sweep"}});
+                  "largest correction at one contact in one sweep"},
+                 {"block_position_correction", &s.blockSolve, "", kNone,
+                  "the position pass corrects a two-point contact's corners together"}});
 }
 
 /// m/s. A speed no contact reaches, the top of the settings' range: a cap or threshold that never
@@ -195,7 +197,7 @@ SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
   settings.targets.restitutionThreshold = kNoLimit;  // and has no bounce
   settings.positionPass.iterations = 0;
   settings.block.enabled = false;
-  settings.blockPositionCorrection = false;
+  settings.positionPass.blockSolve = false;
   return settings;
 }
 
@@ -205,7 +207,7 @@ SequentialImpulseSettings SequentialImpulseSettings::box2d24() {
   settings.convergedImpulseChange = 0.0;
   settings.frictionFirst = true;
   settings.targets.penetrationBias = false;
-  settings.blockPositionCorrection = false;
+  settings.positionPass.blockSolve = false;
   return settings;
 }
 
@@ -226,8 +228,6 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
                   "solve a two-point contact's velocities as one block (Box2D 2.4)"},
                  {"block_condition_limit", &s.block.conditionLimit, "", closed(1.0, 1e12),
                   "a two-point contact is a block only while k₀₀² < this × det K"},
-                 {"block_position_correction", &s.blockPositionCorrection, "", kNone,
-                  "the position pass corrects a two-point contact's corners together"},
                  {"friction_first", &s.frictionFirst, "", kNone,
                   "friction before the normal impulses in each contact's solve (Box2D 2.4)"}});
   return fields;
@@ -296,9 +296,7 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);
   fields.insert(fields.end(),
-                {{"block_position_correction", &s.positionBlock.enabled, "", kNone,
-                  "the position pass corrects a two-point contact's corners together"},
-                 {"block_condition_limit", &s.positionBlock.conditionLimit, "", closed(1.0, 1e12),
+                {{"block_condition_limit", &s.blockConditionLimit, "", closed(1.0, 1e12),
                   "a two-point contact is a block only while k₀₀² < this × det K"}});
   return fields;
 }

@@ -100,6 +100,10 @@ struct PositionPassSettings {
   double correctionFactor = 0.2;
   /// m. Largest correction at one contact in one sweep.
   double maxCorrection = 0.2;
+  /// Block solve: a two-point contact's corners corrected together (the 2×2 block solve,
+  /// two_point_block.h). Off: one corner at a time, as Box2D 2.4's position solver does; the
+  /// corner visited first then sinks the other deeper.
+  bool blockSolve = true;
 };
 
 /// Solving the two points of a flat contact together, exactly (two_point_block.h).

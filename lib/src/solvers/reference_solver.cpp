@@ -721,7 +721,7 @@ void ReferenceSolver::fail(const std::string& reason) {
 
 void ReferenceSolver::solvePositions(const StepContext& context) {
   correctPositions(context, settings_.positionPass, settings_.targets.allowedPenetration,
-                   settings_.positionBlock);
+                   settings_.blockConditionLimit);
 }
 
 }  // namespace impulse2d

@@ -152,8 +152,9 @@ struct ReferenceSolverSettings {
   ContactTargetSettings targets = unbiasedTargets();
   /// The same position pass as sequential impulses.
   PositionPassSettings positionPass;
-  /// The position pass corrects a two-point contact's corners together (as sequential impulses).
-  BlockSolveSettings positionBlock;
+  /// The position pass's block solve takes a two-point contact's corners together only while
+  /// k₀₀² < this × det K (Box2D's 1000, as sequential impulses' block.conditionLimit).
+  double blockConditionLimit = 1000.0;
 };
 
 }  // namespace impulse2d
