@@ -22,6 +22,18 @@ using Sparse = Eigen::SparseMatrix<double>;
 /// A set of states solved this often again means the flips cycle: the flip rule's counters may
 /// send a second visit elsewhere, a third no more.
 constexpr int kVisitsBeforeCycling = 2;
+/// After guessSweeps, the guess's sweeps go on while one still changes a point's state, up to
+/// this many: a pile's first step starts from zero impulses, and its states settle only once the
+/// weight has reached the bottom, about one row a sweep. The sweeps only guess: the answer does
+/// not depend on where they stop.
+constexpr int kMaxGuessSweeps = 400;
+/// A condition counts as violated beyond this fraction of the island's impulse scale: far below
+/// the residual tolerance the answer is checked to, and above round-off, so round-off flips
+/// nothing.
+constexpr double kFlipTolerance = 1e-12;
+/// Under Júdice–Pires: block flips in a row that do not lower the number of violated points
+/// before the method flips one point at a time (their method's p).
+constexpr int kJudicePiresBlockFailures = 3;
 
 /// A point whose answer breaks its state, the state it should take and by how much (N s).
 struct Violation {
@@ -133,9 +145,7 @@ bool gaussSeidelSweep(const IslandProblem& problem, const Eigen::VectorXd& diago
 }
 
 /// Projected Gauss–Seidel sweeps from the guess: at least guessSweeps, then on while a sweep
-/// still changes some point's state, up to maxGuessSweeps. From zero impulses (a pile's first
-/// step) the weight reaches the bottom of a pile about one row a sweep, and the states settle
-/// only after that.
+/// still changes some point's state, up to kMaxGuessSweeps.
 Eigen::VectorXd gaussSeidelGuess(const IslandProblem& problem, const Eigen::VectorXd& free,
                                  const Eigen::VectorXd& diagonal,
                                  const ActiveSetSettings& settings) {
@@ -143,7 +153,8 @@ Eigen::VectorXd gaussSeidelGuess(const IslandProblem& problem, const Eigen::Vect
   Eigen::VectorXd velocity = free + problem.delassus * impulses;
   int sweep = 0;
   bool changed = true;
-  while (sweep < settings.maxGuessSweeps && (changed || sweep < settings.guessSweeps)) {
+  const int most = std::max(kMaxGuessSweeps, settings.guessSweeps);
+  while (sweep < most && (changed || sweep < settings.guessSweeps)) {
     changed = gaussSeidelSweep(problem, diagonal, impulses, velocity);
     ++sweep;
   }
@@ -454,8 +465,7 @@ double impulseScale(const Eigen::VectorXd& impulses, const Eigen::VectorXd& free
 class FlipRule {
  public:
   explicit FlipRule(const ActiveSetSettings& settings)
-      : blockFailures_(settings.blockFailures),
-        backtrack_(settings.cyclingSafeguard == CyclingSafeguard::Backtrack) {}
+      : backtrack_(settings.cyclingSafeguard == CyclingSafeguard::Backtrack) {}
 
   void apply(const std::vector<Violation>& found, std::vector<ContactState>& states) {
     const int count = static_cast<int>(found.size());
@@ -478,7 +488,7 @@ class FlipRule {
         flip(bestFound_, share, states);
         return;
       }
-    } else if (failures_ <= blockFailures_) {
+    } else if (failures_ <= kJudicePiresBlockFailures) {
       flip(found, count, states);
       return;
     }
@@ -503,7 +513,6 @@ class FlipRule {
     lastFlipped_ = worst->point;
   }
 
-  int blockFailures_;
   bool backtrack_;
   int lastFlipped_ = -1;
   int best_ = std::numeric_limits<int>::max();
@@ -583,7 +592,7 @@ std::optional<Eigen::VectorXd> solveGuessSystem(const GuessSystem& system,
   return system.impulses(unknowns);
 }
 
-/// What the answer breaks (violations), measured against flipTolerance of its impulse scale.
+/// What the answer breaks (violations), measured against kFlipTolerance of its impulse scale.
 std::vector<Violation> violationsOfAnswer(const IslandProblem& problem,
                                           const std::vector<ContactState>& states,
                                           const Eigen::VectorXd& impulses,
@@ -591,7 +600,7 @@ std::vector<Violation> violationsOfAnswer(const IslandProblem& problem,
                                           const Eigen::VectorXd& diagonal,
                                           const ActiveSetSettings& settings) {
   const Eigen::VectorXd velocity = free + delassusTimes(problem, impulses);
-  const double tolerance = settings.flipTolerance * impulseScale(impulses, free, diagonal);
+  const double tolerance = kFlipTolerance * impulseScale(impulses, free, diagonal);
   return violations(problem, states, impulses, velocity, diagonal, tolerance,
                     settings.enterSliding);
 }

@@ -9,10 +9,29 @@
 #include <Eigen/SparseLU>
 
 namespace impulse2d {
+namespace {
+
+// How far GMRES on kept factors goes before a factorization, and the factorization's pivot rule:
+// they change what a solve costs, not its answer, and are not for tuning.
+
+/// GMRES rounds on kept factors before the system is factorized after all, and then at most as
+/// many corrections that take the regularization out: a system whose rows barely moved needs a
+/// round or two, and each round costs a small share of a factorization.
+constexpr int kKeptRounds = 8;
+/// A solve on kept factors is done once the residual of A x = b is below this fraction of
+/// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.
+constexpr double kKeptTolerance = 1e-14;
+/// The factorization takes a row's own diagonal entry as its pivot when that entry is at least
+/// this fraction of the largest in its column, so the symmetric fill-reducing order holds;
+/// below, it pivots on the largest. The regularized pivots of a redundant pile are about
+/// `regularization` of their column and must pass; 1 would be partial pivoting.
+constexpr double kDiagonalPivotThreshold = 1e-12;
+
+}  // namespace
 
 /// LU factors of P A Pᵀ, P a symmetric fill-reducing order (AMD on A's pattern, which is
 /// symmetric: two points couple when they share a body) and the pivots A's own diagonal wherever
-/// it is at least diagonalPivotThreshold of its column. A column order alone (COLAMD) with
+/// it is at least kDiagonalPivotThreshold of its column. A column order alone (COLAMD) with
 /// partial pivoting, as for an unsymmetric matrix, fills far more entries on a large pile's
 /// system (docs/design/reference-active-set.md), and the regularized pivots of a redundant pile
 /// (about r) would be passed over for off-diagonal ones, breaking the symmetric order's fill.
@@ -51,7 +70,7 @@ double KeptFactorization::residualScale(const Eigen::VectorXd& rhs,
 }
 
 bool KeptFactorization::factorize() {
-  factors_->compute(system_->matrix(), settings_.diagonalPivotThreshold);
+  factors_->compute(system_->matrix(), kDiagonalPivotThreshold);
   factoredSize_ = system_->size();
   ++factorizations_;
   extraSolves_ = 0;
@@ -115,11 +134,11 @@ struct GivensLeastSquares {
 /// x with A x = rhs by GMRES preconditioned on the right by the kept factors K: from x = K⁻¹rhs,
 /// the Krylov space of A K⁻¹ holds what K misses. A system whose values moved a little needs a
 /// round or two, one with k rows changed (k states flipped since K) about k + 1. False if the
-/// residual is not at round-off within keptRounds (K is too far from A).
+/// residual is not at round-off within kKeptRounds (K is too far from A).
 bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
-  const int rounds = settings_.keptRounds;
+  const int rounds = kKeptRounds;
   x = factors_->solve(rhs);
-  const double tolerance = settings_.keptTolerance * residualScale(rhs, x);
+  const double tolerance = kKeptTolerance * residualScale(rhs, x);
   const Eigen::VectorXd residual = rhs - system_->times(x);
   const double beta = residual.norm();
   if (residual.cwiseAbs().maxCoeff() <= tolerance) return true;
@@ -148,8 +167,8 @@ bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::Ve
 
 /// x with A₀x = rhs, A₀ the system without its regularization S (A = A₀ + S): one solve of
 /// A x = rhs + S·centre (on the fresh factors, or by GMRES on kept ones), then corrections
-/// x += K⁻¹(rhs − A₀x) by the factors K until A₀'s residual is below refinementTolerance of its
-/// scale: at most `refinements` on fresh factors, `keptRounds` on kept ones. On fresh factors
+/// x += K⁻¹(rhs − A₀x) by the factors K until A₀'s residual is below kRefinementTolerance of its
+/// scale: at most `refinements` on fresh factors, kKeptRounds on kept ones. On fresh factors
 /// (K = A) each correction is a proximal point step, the solve of A x' = rhs + S x, so the
 /// velocity rows end exact while redundant contacts keep the split the first solve chose, near
 /// the centre's. A centre within ε of the answer leaves about r·ε, often none to correct. On kept
@@ -164,11 +183,11 @@ bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, const Eigen::V
   } else if (!solveOnKeptFactors(centred, x)) {
     return false;
   }
-  const int corrections = fresh_ ? settings_.refinements : settings_.keptRounds;
+  const int corrections = fresh_ ? settings_.refinements : kKeptRounds;
   for (int k = 0;; ++k) {
     Eigen::VectorXd residual = rhs - system_->times(x);
     residual += system_->shift().cwiseProduct(x);
-    if (residual.cwiseAbs().maxCoeff() <= settings_.refinementTolerance * residualScale(rhs, x)) {
+    if (residual.cwiseAbs().maxCoeff() <= kRefinementTolerance * residualScale(rhs, x)) {
       return true;
     }
     if (k == corrections) return fresh_;

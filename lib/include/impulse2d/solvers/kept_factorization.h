@@ -12,6 +12,11 @@
 
 namespace impulse2d {
 
+/// The corrections that take the regularization out stop once the residual of the unregularized
+/// system is below this fraction of |b| + |A||x|: a thousandth of the reference's residual
+/// tolerance, and above the floor that a pile's redundant rows leave.
+constexpr double kRefinementTolerance = 1e-12;
+
 /// One guess's linear system A x = b as the active set poses it, A = A₀ + S with S the
 /// regularization on the diagonal: its products A x (taken through the bodies, at the cost of the
 /// points' Jacobian rows), and its matrix only when it is factorized.
@@ -38,7 +43,7 @@ class PosedSystem {
 /// GMRES preconditioned by the kept factors K: K⁻¹b is already close, and the Krylov space of
 /// A K⁻¹ holds the rest in about one round per changed row, each round two triangular solves
 /// and a product through the bodies instead of an assembly and a factorization. A system not
-/// solved to round-off within keptRounds (many states flipped, another island) is factorized
+/// solved to round-off within a few rounds (many states flipped, another island) is factorized
 /// after all; the answer is the same either way. A settling pile drifts from its kept factors and
 /// needs a round every step: once such extra solves reach refactorAfterSolves, about a
 /// factorization's cost, the next system is factorized afresh.
