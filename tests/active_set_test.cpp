@@ -284,7 +284,7 @@ TEST_CASE("kept factors that need extra solves every step are renewed after refa
   // Each step's system has drifted a little more from the first, so each solve on the first
   // step's factors needs GMRES rounds beyond its first solve. Those extra solves add up; at
   // refactorAfterSolves the next system is factorized afresh. Every answer solves its own
-  // system to the corrections' stopping bound (refinementTolerance of |b| + |A||x|) either way.
+  // system to the corrections' stopping bound (kRefinementTolerance of |b| + |A||x|) either way.
   constexpr int kSize = 40;
   constexpr int kSteps = 12;
   const auto run = [&](int refactorAfterSolves) {
@@ -297,7 +297,7 @@ TEST_CASE("kept factors that need extra solves every step are renewed after refa
       REQUIRE(kept.prepare(system, true, settings));
       const Eigen::VectorXd x = kept.solve(rhs, Eigen::VectorXd::Zero(kSize));
       const double scale = rhs.cwiseAbs().maxCoeff() + system.rowSum() * x.cwiseAbs().maxCoeff();
-      CHECK((system.times(x) - rhs).cwiseAbs().maxCoeff() <= settings.refinementTolerance * scale);
+      CHECK((system.times(x) - rhs).cwiseAbs().maxCoeff() <= kRefinementTolerance * scale);
     }
     return kept.factorizations();
   };

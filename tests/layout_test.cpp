@@ -107,7 +107,12 @@ TEST_CASE("no solver file includes another solver", "[layout]") {
   const std::set<std::string> solvers = {"micro_collision", "sequential_impulses",
                                          "reference_solver", "soft_step"};
   for (const auto& entry : fs::directory_iterator(kLib / "src" / "solvers")) {
-    const std::string own = entry.path().stem().string();
+    // A method's named parts (micro_collision_pairs.cpp) are that method's own.
+    const std::string stem = entry.path().stem().string();
+    std::string own = stem;
+    for (const std::string& solver : solvers) {
+      if (startsWith(stem, solver + "_")) own = solver;
+    }
     for (const std::string& name : includesOf(entry.path())) {
       const std::string included = fs::path(name).stem().string();
       INFO(entry.path().filename().string() << " includes " << name);

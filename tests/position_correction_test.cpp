@@ -26,8 +26,9 @@ struct Overlap {
   double penetration(int point) const {
     return currentPenetration(bodies[0], bodies[1], manifolds[0], point);
   }
-  void correct(const PositionPassSettings& pass, double slop, const BlockSolveSettings& block) {
-    correctPositions(StepContext{bodies, manifolds, kDt}, pass, slop, block);
+  void correct(const PositionPassSettings& pass, double slop) {
+    correctPositions(StepContext{bodies, manifolds, kDt}, pass, slop,
+                     BlockSolveSettings{}.conditionLimit);
   }
 };
 
@@ -59,7 +60,7 @@ TEST_CASE("each sweep removes the correction factor of the overlap beyond the sl
   Overlap overlap = boxSunkInto(kOverlap);
   const PositionPassSettings pass;
   const double slop = ContactTargetSettings{}.allowedPenetration;
-  overlap.correct(pass, slop, BlockSolveSettings{});
+  overlap.correct(pass, slop);
   const double remaining =
       slop + (kOverlap - slop) * std::pow(1.0 - pass.correctionFactor, pass.iterations);
   for (int i = 0; i < 2; ++i) CHECK(overlap.penetration(i) == Approx(remaining).epsilon(1e-9));
@@ -73,13 +74,13 @@ TEST_CASE("the slop is left alone and zero sweeps move nothing", "[position][slo
   const double slop = ContactTargetSettings{}.allowedPenetration;
   Overlap withinSlop = boxSunkInto(0.5 * slop);
   const Vec2 before = withinSlop.bodies[1].position;
-  withinSlop.correct(PositionPassSettings{}, slop, BlockSolveSettings{});
+  withinSlop.correct(PositionPassSettings{}, slop);
   CHECK(withinSlop.bodies[1].position == before);
 
   Overlap deep = boxSunkInto(kOverlap);
   PositionPassSettings off;
   off.iterations = 0;
-  deep.correct(off, slop, BlockSolveSettings{});
+  deep.correct(off, slop);
   CHECK(deep.penetration(0) == Approx(kOverlap).epsilon(1e-12));
 }
 
@@ -89,7 +90,7 @@ TEST_CASE("one sweep corrects a deep overlap by at most the largest correction",
   PositionPassSettings pass;
   pass.iterations = 1;
   pass.correctionFactor = 1.0;
-  overlap.correct(pass, 0.0, BlockSolveSettings{});
+  overlap.correct(pass, 0.0);
   for (int i = 0; i < 2; ++i) {
     CHECK(overlap.penetration(i) == Approx(0.5 - pass.maxCorrection).epsilon(1e-9));
   }
@@ -101,7 +102,7 @@ TEST_CASE("a correction between two bodies is split in inverse proportion to the
   Overlap overlap = boxSunkInto(kOverlap, kLowerDensity);
   const Vec2 lowerBefore = overlap.bodies[0].position;
   const Vec2 upperBefore = overlap.bodies[1].position;
-  overlap.correct(PositionPassSettings{}, 0.0, BlockSolveSettings{});
+  overlap.correct(PositionPassSettings{}, 0.0);
   const double lowerMove = (overlap.bodies[0].position - lowerBefore).y();
   const double upperMove = (overlap.bodies[1].position - upperBefore).y();
   REQUIRE(upperMove > 0.0);
@@ -116,14 +117,14 @@ TEST_CASE("the block correction treats both corners alike; one at a time favours
   PositionPassSettings pass;
   pass.iterations = 1;
   Overlap together = boxSunkInto(kOverlap);
-  together.correct(pass, slop, BlockSolveSettings{});
+  together.correct(pass, slop);
   CHECK(together.penetration(0) == Approx(together.penetration(1)).margin(1e-12));
   CHECK(together.bodies[1].angle == Approx(0.0).margin(1e-12));
 
-  BlockSolveSettings apart;
-  apart.enabled = false;
+  PositionPassSettings apart = pass;
+  apart.blockSolve = false;
   Overlap oneByOne = boxSunkInto(kOverlap);
-  oneByOne.correct(pass, slop, apart);
+  oneByOne.correct(apart, slop);
   // Pushing one corner of a unit box (arms (±0.5, −0.5), m = 1, I = 1/6) moves the other by
   // K01/K00 = (1 − 6·0.25)/(1 + 6·0.25) = −0.2 of the push: the first corner's correction sinks
   // the second deeper, whose correction then sinks the first. Worked through once:

@@ -204,7 +204,7 @@ TEST_CASE("[solver] preset = \"box2d_2_4\" sets Box2D 2.4.1's contact solver",
   CHECK(sequential.positionPass.iterations == 3);
   CHECK(sequential.frictionFirst);
   CHECK_FALSE(sequential.targets.penetrationBias);
-  CHECK_FALSE(sequential.blockPositionCorrection);
+  CHECK_FALSE(sequential.positionPass.blockSolve);
   CHECK(errorOf("[world]\nsolver = \"reference\"\n[solver]\npreset = \"box2d_2_4\"\n" +
                 std::string(kOneBall)) ==
         "bad.toml:4:10: unknown preset 'box2d_2_4' for solver 'reference' (known: none; i2d "
@@ -259,6 +259,10 @@ TEST_CASE("a renamed or removed solver key is refused with a hint naming what to
         "bad.toml:4:30: 'restitution_velocity_limit' is now 'restitution_threshold', Box2D's word");
   CHECK(errorOf("[solver]\nmax_bias_velocity = 2\n" + std::string(kOneBall)) ==
         "bad.toml:2:21: 'max_bias_velocity' is now 'max_push_velocity', Box2D's word");
+  CHECK(errorOf("[world]\nsolver = \"reference\"\n[solver]\npivot_tolerance = 1e-9\n" +
+                std::string(kOneBall)) ==
+        "bad.toml:4:19: 'pivot_tolerance' is now the constant kPivotTolerance in lcp.cpp: it tells "
+        "round-off from a pivot");
   // The same key of another method is that method's business: sequential never had warm_start.
   CHECK(errorOf("[solver]\nwarm_start = false\n" + std::string(kOneBall))
             .find("unknown key 'warm_start' in [solver] for solver 'sequential'") !=

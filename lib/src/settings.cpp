@@ -177,7 +177,9 @@ void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
                  {"position_correction_factor", &s.correctionFactor, "", closed(0.0, 1.0),
                   "fraction of the penetration beyond the slop removed per sweep"},
                  {"max_position_correction", &s.maxCorrection, "m", closed(0.0, 10.0),
-                  "largest correction at one contact in one sweep"}});
+                  "largest correction at one contact in one sweep"},
+                 {"block_position_correction", &s.blockSolve, "", kNone,
+                  "the position pass corrects a two-point contact's corners together"}});
 }
 
 /// m/s. A speed no contact reaches, the top of the settings' range: a cap or threshold that never
@@ -195,7 +197,7 @@ SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
   settings.targets.restitutionThreshold = kNoLimit;  // and has no bounce
   settings.positionPass.iterations = 0;
   settings.block.enabled = false;
-  settings.blockPositionCorrection = false;
+  settings.positionPass.blockSolve = false;
   return settings;
 }
 
@@ -205,7 +207,7 @@ SequentialImpulseSettings SequentialImpulseSettings::box2d24() {
   settings.convergedImpulseChange = 0.0;
   settings.frictionFirst = true;
   settings.targets.penetrationBias = false;
-  settings.blockPositionCorrection = false;
+  settings.positionPass.blockSolve = false;
   return settings;
 }
 
@@ -226,8 +228,6 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
                   "solve a two-point contact's velocities as one block (Box2D 2.4)"},
                  {"block_condition_limit", &s.block.conditionLimit, "", closed(1.0, 1e12),
                   "a two-point contact is a block only while k₀₀² < this × det K"},
-                 {"block_position_correction", &s.blockPositionCorrection, "", kNone,
-                  "the position pass corrects a two-point contact's corners together"},
                  {"friction_first", &s.frictionFirst, "", kNone,
                   "friction before the normal impulses in each contact's solve (Box2D 2.4)"}});
   return fields;
@@ -242,16 +242,6 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
        "Lemke gives up after this many pivots"},
       {"max_pivots_per_variable", &s.lemke.maxPivotsPerVariable, "", closed(1, 100, kWork),
        "...or after this many per variable, if fewer"},
-      {"pivot_tolerance", &s.lemke.pivotTolerance, "", closed(0.0, 1.0),
-       "a pivot must exceed this share of its column's largest entry"},
-      {"tie_tolerance", &s.lemke.tieTolerance, "", closed(0.0, 1.0),
-       "ratios closer than this count as a tie, broken lexicographically"},
-      {"degeneracy_perturbation", &s.degeneracyPerturbation, "", closed(0.0, 1e-3),
-       "Lemke is retried once with q moved by this much"},
-      {"covering_retries", &s.coveringRetries, "", closed(0, 100, kWork),
-       "further covering vectors Lemke is retried along"},
-      {"harris_tolerance", &s.lemke.harrisTolerance, "", closed(0.0, 1.0),
-       "how far Harris's ratio test may overshoot a basic variable"},
       {"lemke_island_points", &s.lemkeIslandPoints, "", closed(0, 500, kCubic),
        "islands of up to this many points are solved by Lemke, larger by the active set"},
       {"lemke_fallback_points", &s.lemkeFallbackPoints, "", closed(0, 500, kCubic),
@@ -259,28 +249,18 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
       {"restitution_in_two_solves", &s.restitutionInTwoSolves, "", kNone,
        "an island whose bounce targets have no answer bounces by Poisson's law in two solves"},
       {"guess_sweeps", &a.guessSweeps, "", closed(0, 10000, kWork),
-       "projected Gauss–Seidel sweeps that guess each point's state"},
-      {"max_guess_sweeps", &a.maxGuessSweeps, "", closed(0, 10000, kWork),
-       "...going on while a sweep still changes a state, up to this many"},
+       "projected Gauss–Seidel sweeps that guess each point's state, more while one changes it"},
       {"warm_states", &a.warmStates, "", kNone,
        "a point solved last step starts in the state it was solved in"},
       {"keep_factors", &a.keepFactors, "", kNone,
        "keep the last factors and first try GMRES preconditioned by them"},
-      {"kept_rounds", &a.keptRounds, "", closed(0, 10000, kWork),
-       "GMRES rounds on kept factors before factorizing after all"},
-      {"kept_tolerance", &a.keptTolerance, "", closed(0.0, 1.0),
-       "a solve on kept factors is done below this relative residual"},
       {"refactor_after_solves", &a.refactorAfterSolves, "", closed(0, 100000),
        "solves on kept factors after which the next system is factorized afresh"},
-      {"diagonal_pivot_threshold", &a.diagonalPivotThreshold, "", closed(0.0, 1.0),
-       "the factorization pivots on the diagonal while it is this share of its column's largest"},
       {"max_factorizations", &a.maxFactorizations, "", closed(0, 10000, kWork),
        "the active set gives up after this many factorizations"},
       {"cycling_safeguard", choice(a.cyclingSafeguard, {"judice_pires", "backtrack"}), "", kNone,
        "after a flip that does not help: `judice_pires`, more block flips, then one point at a "
        "time; `backtrack`, back to the best states, flipping half as many"},
-      {"block_failures", &a.blockFailures, "", closed(0, 10000),
-       "under `judice_pires`, block flips that do not help before flipping one at a time"},
       {"enter_sliding", &a.enterSliding, "", kNone,
        "a separated point the answer closes while it slips starts sliding, not sticking"},
       {"regularization", &a.regularization, "", closed(0.0, 1.0),
@@ -288,17 +268,11 @@ std::vector<SettingField> describe(ReferenceSolverSettings& s) {
       {"centre_on_guess", &a.centreOnGuess, "", kNone,
        "the regularization is centred on the guess instead of on zero"},
       {"refinements", &a.refinements, "", closed(0, 100, kWork),
-       "most corrections that take the regularization's shift out"},
-      {"refinement_tolerance", &a.refinementTolerance, "", closed(0.0, 1.0),
-       "the corrections stop below this relative residual"},
-      {"flip_tolerance", &a.flipTolerance, "", closed(0.0, 1.0),
-       "a condition counts as violated beyond this share of the impulse scale"}};
+       "most corrections that take the regularization's shift out"}};
   addFields(fields, s.targets);
   addFields(fields, s.positionPass);
   fields.insert(fields.end(),
-                {{"block_position_correction", &s.positionBlock.enabled, "", kNone,
-                  "the position pass corrects a two-point contact's corners together"},
-                 {"block_condition_limit", &s.positionBlock.conditionLimit, "", closed(1.0, 1e12),
+                {{"block_condition_limit", &s.blockConditionLimit, "", closed(1.0, 1e12),
                   "a two-point contact is a block only while k₀₀² < this × det K"}});
   return fields;
 }

@@ -18,10 +18,10 @@ enum class Sleep {
   /// while its speed and spin have grown by less than speedUpShare of the thresholds since its
   /// rest began; past that its rest begins again. A body that starts from rest and gathers speed
   /// slowly is then not frozen before it reaches the thresholds: under Box2D's rule a disc
-  /// rolling down 0.15° (a = 0.017 m/s²), a box on a slope 0.002 under its friction's limit or a
-  /// seesaw 0.5 % out of balance is still slower than them after timeToSleep, falls asleep and
-  /// never moves again, since a static body wakes nothing. With it the slowest start that
-  /// escapes is ten times slower (docs/sleeping.md).
+  /// rolling down a gentle slope, a box on a slope just under its friction's limit or a seesaw
+  /// slightly out of balance is still slower than them after timeToSleep, falls asleep and never
+  /// moves again, since a static body wakes nothing (docs/sleeping.md; the slowest starts that
+  /// freeze with and without it are in docs/design/sleeping-while-speeding-up.md).
   KeepSpeedingUpAwake,
 };
 
@@ -100,6 +100,10 @@ struct PositionPassSettings {
   double correctionFactor = 0.2;
   /// m. Largest correction at one contact in one sweep.
   double maxCorrection = 0.2;
+  /// Block solve: a two-point contact's corners corrected together (the 2×2 block solve,
+  /// two_point_block.h). Off: one corner at a time, as Box2D 2.4's position solver does; the
+  /// corner visited first then sinks the other deeper.
+  bool blockSolve = true;
 };
 
 /// Solving the two points of a flat contact together, exactly (two_point_block.h).

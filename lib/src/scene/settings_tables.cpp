@@ -113,6 +113,38 @@ constexpr RetiredKey kRetiredKeys[] = {
     {"soft_step", "renew_round_normals",
      "is now a value of 'recycling': our rules beyond v3's are recycling = \"refined\", v3's "
      "alone \"box2d_v3\""},
+    {"reference", "pivot_tolerance",
+     "is now the constant kPivotTolerance in lcp.cpp: it tells round-off from a pivot"},
+    {"reference", "tie_tolerance",
+     "is now the constant kTieTolerance in lcp.cpp: it tells round-off from a tie"},
+    {"reference", "harris_tolerance",
+     "is now the constant kHarrisTolerance in lcp.cpp: Harris's overshoot is round-off's size"},
+    {"reference", "degeneracy_perturbation",
+     "is now the constant kDegeneracyPerturbation in reference_solver.cpp: the retry's answer is "
+     "checked anyway"},
+    {"reference", "covering_retries",
+     "is now the constant kCoveringRetries in reference_solver.cpp: each retry's answer is checked "
+     "anyway"},
+    {"reference", "max_guess_sweeps",
+     "is now the constant kMaxGuessSweeps in active_set.cpp: the sweeps only guess; 'guess_sweeps' "
+     "is still the least"},
+    {"reference", "block_failures",
+     "is now the constant kJudicePiresBlockFailures in active_set.cpp; 'cycling_safeguard' chooses "
+     "the rule"},
+    {"reference", "flip_tolerance",
+     "is now the constant kFlipTolerance in active_set.cpp: it tells round-off from a violation"},
+    {"reference", "kept_rounds",
+     "is now the constant kKeptRounds in kept_factorization.cpp: it changes the cost, not the "
+     "answer; 'keep_factors' turns kept factors off"},
+    {"reference", "kept_tolerance",
+     "is now the constant kKeptTolerance in kept_factorization.cpp: a solve on kept factors ends "
+     "at round-off"},
+    {"reference", "diagonal_pivot_threshold",
+     "is now the constant kDiagonalPivotThreshold in kept_factorization.cpp: it keeps the "
+     "factorization's symmetric fill-reducing order"},
+    {"reference", "refinement_tolerance",
+     "is now the constant kRefinementTolerance in kept_factorization.h; 'refinements' still caps "
+     "the corrections"},
     {"world", "sleeping",
      "is now 'sleep': sleeping = false is sleep = \"off\", true is "
      "\"keep_speeding_up_awake\" (or \"box2d\", Box2D's rule alone)"},

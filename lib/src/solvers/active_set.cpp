@@ -22,6 +22,18 @@ using Sparse = Eigen::SparseMatrix<double>;
 /// A set of states solved this often again means the flips cycle: the flip rule's counters may
 /// send a second visit elsewhere, a third no more.
 constexpr int kVisitsBeforeCycling = 2;
+/// After guessSweeps, the guess's sweeps go on while one still changes a point's state, up to
+/// this many: a pile's first step starts from zero impulses, and its states settle only once the
+/// weight has reached the bottom, about one row a sweep. The sweeps only guess: the answer does
+/// not depend on where they stop.
+constexpr int kMaxGuessSweeps = 400;
+/// A condition counts as violated beyond this fraction of the island's impulse scale: far below
+/// the residual tolerance the answer is checked to, and above round-off, so round-off flips
+/// nothing.
+constexpr double kFlipTolerance = 1e-12;
+/// Under Júdice–Pires: block flips in a row that do not lower the number of violated points
+/// before the method flips one point at a time (their method's p).
+constexpr int kJudicePiresBlockFailures = 3;
 
 /// A point whose answer breaks its state, the state it should take and by how much (N s).
 struct Violation {
@@ -133,9 +145,7 @@ bool gaussSeidelSweep(const IslandProblem& problem, const Eigen::VectorXd& diago
 }
 
 /// Projected Gauss–Seidel sweeps from the guess: at least guessSweeps, then on while a sweep
-/// still changes some point's state, up to maxGuessSweeps. From zero impulses (a pile's first
-/// step) the weight reaches the bottom of a pile about one row a sweep, and the states settle
-/// only after that.
+/// still changes some point's state, up to kMaxGuessSweeps.
 Eigen::VectorXd gaussSeidelGuess(const IslandProblem& problem, const Eigen::VectorXd& free,
                                  const Eigen::VectorXd& diagonal,
                                  const ActiveSetSettings& settings) {
@@ -143,7 +153,8 @@ Eigen::VectorXd gaussSeidelGuess(const IslandProblem& problem, const Eigen::Vect
   Eigen::VectorXd velocity = free + problem.delassus * impulses;
   int sweep = 0;
   bool changed = true;
-  while (sweep < settings.maxGuessSweeps && (changed || sweep < settings.guessSweeps)) {
+  const int most = std::max(kMaxGuessSweeps, settings.guessSweeps);
+  while (sweep < most && (changed || sweep < settings.guessSweeps)) {
     changed = gaussSeidelSweep(problem, diagonal, impulses, velocity);
     ++sweep;
   }
@@ -454,8 +465,7 @@ double impulseScale(const Eigen::VectorXd& impulses, const Eigen::VectorXd& free
 class FlipRule {
  public:
   explicit FlipRule(const ActiveSetSettings& settings)
-      : blockFailures_(settings.blockFailures),
-        backtrack_(settings.cyclingSafeguard == CyclingSafeguard::Backtrack) {}
+      : backtrack_(settings.cyclingSafeguard == CyclingSafeguard::Backtrack) {}
 
   void apply(const std::vector<Violation>& found, std::vector<ContactState>& states) {
     const int count = static_cast<int>(found.size());
@@ -478,7 +488,7 @@ class FlipRule {
         flip(bestFound_, share, states);
         return;
       }
-    } else if (failures_ <= blockFailures_) {
+    } else if (failures_ <= kJudicePiresBlockFailures) {
       flip(found, count, states);
       return;
     }
@@ -503,7 +513,6 @@ class FlipRule {
     lastFlipped_ = worst->point;
   }
 
-  int blockFailures_;
   bool backtrack_;
   int lastFlipped_ = -1;
   int best_ = std::numeric_limits<int>::max();
@@ -544,182 +553,6 @@ Guess firstGuess(const IslandProblem& problem, const Eigen::VectorXd& free,
 
 }  // namespace
 
-/// LU factors of P A Pᵀ, P a symmetric fill-reducing order (AMD on A's pattern, which is
-/// symmetric: two points couple when they share a body) and the pivots A's own diagonal wherever
-/// it is at least diagonalPivotThreshold of its column. A column order alone (COLAMD) with
-/// partial pivoting, as for an unsymmetric matrix, fills twice as many entries on a large pile's
-/// system (docs/design/reference-active-set.md), and the regularized pivots of a redundant pile
-/// (about r) would be passed over for off-diagonal ones, breaking the symmetric order's fill.
-struct KeptFactorization::Factors {
-  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;  ///< P⁻¹
-  Eigen::SparseLU<Sparse, Eigen::NaturalOrdering<int>> lu;
-
-  void compute(const Sparse& system, double pivotThreshold) {
-    Eigen::AMDOrdering<int>()(system, order);
-    const Sparse rows = order.inverse() * system;
-    lu.setPivotThreshold(pivotThreshold);
-    lu.compute(rows * order);
-  }
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const {
-    return order * lu.solve(order.inverse() * rhs).eval();
-  }
-};
-
-KeptFactorization::KeptFactorization() : factors_(std::make_unique<Factors>()) {}
-KeptFactorization::~KeptFactorization() = default;
-
-bool KeptFactorization::prepare(const PosedSystem& system, bool reuse,
-                                const ActiveSetSettings& settings) {
-  const bool sameSize = factorsValid_ && system.size() == factoredSize_;
-  system_ = &system;
-  settings_ = settings;
-  fresh_ = false;
-  if (!reuse || !sameSize || extraSolves_ >= settings.refactorAfterSolves) return factorize();
-  return true;
-}
-
-/// The scale of a residual of A x = rhs: |rhs| + |A||x| (largest entries, largest row sum).
-double KeptFactorization::residualScale(const Eigen::VectorXd& rhs,
-                                        const Eigen::VectorXd& x) const {
-  return rhs.cwiseAbs().maxCoeff() + system_->rowSum() * x.cwiseAbs().maxCoeff();
-}
-
-bool KeptFactorization::factorize() {
-  factors_->compute(system_->matrix(), settings_.diagonalPivotThreshold);
-  factoredSize_ = system_->size();
-  ++factorizations_;
-  extraSolves_ = 0;
-  fresh_ = factorsValid_ = factors_->lu.info() == Eigen::Success;
-  if (!fresh_) lastError_ = factors_->lu.lastErrorMessage();
-  return fresh_;
-}
-
-namespace {
-
-/// The Givens rotation (c, s) that turns (a, b) into (r, 0).
-std::pair<double, double> givens(double a, double b) {
-  const double r = std::hypot(a, b);
-  return r > 0.0 ? std::pair{a / r, b / r} : std::pair{1.0, 0.0};
-}
-
-/// GMRES's small least-squares problem min |β e₁ − H y|, H the Hessenberg matrix the Arnoldi
-/// process builds a column per round, kept upper triangular by Givens rotations; g is β e₁
-/// rotated alike, so |g(j + 1)| is the residual's norm after round j.
-struct GivensLeastSquares {
-  GivensLeastSquares(int rounds, double beta)
-      : hessenberg(Eigen::MatrixXd::Zero(rounds + 1, rounds)),
-        g(Eigen::VectorXd::Zero(rounds + 1)) {
-    g(0) = beta;
-  }
-
-  /// Turns column j of H upper triangular: the earlier rotations, then a new one that zeroes its
-  /// entry below the diagonal, applied to g too.
-  void rotateColumn(int j) {
-    for (int i = 0; i < j; ++i) {
-      const auto [c, s] = rotations[i];
-      const double top = hessenberg(i, j);
-      hessenberg(i, j) = c * top + s * hessenberg(i + 1, j);
-      hessenberg(i + 1, j) = -s * top + c * hessenberg(i + 1, j);
-    }
-    rotations.push_back(givens(hessenberg(j, j), hessenberg(j + 1, j)));
-    const auto [c, s] = rotations.back();
-    hessenberg(j, j) = c * hessenberg(j, j) + s * hessenberg(j + 1, j);
-    hessenberg(j + 1, j) = 0.0;
-    g(j + 1) = -s * g(j);
-    g(j) = c * g(j);
-  }
-
-  /// The residual's norm after round j.
-  double residualNorm(int j) const { return std::abs(g(j + 1)); }
-
-  /// y of rounds 0..j: the rotated problem's triangular solve.
-  Eigen::VectorXd solution(int j) const {
-    return hessenberg.topLeftCorner(j + 1, j + 1)
-        .triangularView<Eigen::Upper>()
-        .solve(g.head(j + 1));
-  }
-
-  Eigen::MatrixXd hessenberg;                        ///< H, its columns rotated so far
-  std::vector<std::pair<double, double>> rotations;  ///< (c, s) of each column's rotation
-  Eigen::VectorXd g;                                 ///< β e₁, rotated alike
-};
-
-}  // namespace
-
-/// x with A x = rhs by GMRES preconditioned on the right by the kept factors K: from x = K⁻¹rhs,
-/// the Krylov space of A K⁻¹ holds what K misses. A system whose values moved a little needs a
-/// round or two, one with k rows changed (k states flipped since K) about k + 1. False if the
-/// residual is not at round-off within keptRounds (K is too far from A).
-bool KeptFactorization::solveOnKeptFactors(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
-  const int rounds = settings_.keptRounds;
-  x = factors_->solve(rhs);
-  const double tolerance = settings_.keptTolerance * residualScale(rhs, x);
-  const Eigen::VectorXd residual = rhs - system_->times(x);
-  const double beta = residual.norm();
-  if (residual.cwiseAbs().maxCoeff() <= tolerance) return true;
-  std::vector<Eigen::VectorXd> basis{residual / beta};
-  std::vector<Eigen::VectorXd> preconditioned;
-  GivensLeastSquares leastSquares(rounds, beta);
-  Eigen::MatrixXd& hessenberg = leastSquares.hessenberg;
-  for (int j = 0; j < rounds; ++j) {
-    ++extraSolves_;
-    preconditioned.push_back(factors_->solve(basis[j]));
-    Eigen::VectorXd w = system_->times(preconditioned.back());
-    for (int i = 0; i <= j; ++i) {
-      hessenberg(i, j) = w.dot(basis[i]);
-      w -= hessenberg(i, j) * basis[i];
-    }
-    hessenberg(j + 1, j) = w.norm();
-    basis.push_back(w / hessenberg(j + 1, j));
-    leastSquares.rotateColumn(j);
-    if (leastSquares.residualNorm(j) > tolerance) continue;
-    const Eigen::VectorXd y = leastSquares.solution(j);
-    for (int i = 0; i <= j; ++i) x += y(i) * preconditioned[i];
-    return (rhs - system_->times(x)).cwiseAbs().maxCoeff() <= tolerance;
-  }
-  return false;
-}
-
-/// x with A₀x = rhs, A₀ the system without its regularization S (A = A₀ + S): one solve of
-/// A x = rhs + S·centre (on the fresh factors, or by GMRES on kept ones), then corrections
-/// x += K⁻¹(rhs − A₀x) by the factors K until A₀'s residual is below refinementTolerance of its
-/// scale: at most `refinements` on fresh factors, `keptRounds` on kept ones. On fresh factors
-/// (K = A) each correction is a proximal point step, the solve of A x' = rhs + S x, so the
-/// velocity rows end exact while redundant contacts keep the split the first solve chose, near
-/// the centre's. A centre within ε of the answer leaves about r·ε, often none to correct. On kept
-/// factors K only approximates A and each correction still shrinks the residual by about
-/// |K⁻¹(A − K)| + |S|: one correction instead of a GMRES solve per proximal step. False if a
-/// solve on kept factors does not reach its tolerance (the caller then factorizes).
-bool KeptFactorization::solveProximal(const Eigen::VectorXd& rhs, const Eigen::VectorXd& centre,
-                                      Eigen::VectorXd& x) {
-  const Eigen::VectorXd centred = rhs + system_->shift().cwiseProduct(centre);
-  if (fresh_) {
-    x = factors_->solve(centred);
-  } else if (!solveOnKeptFactors(centred, x)) {
-    return false;
-  }
-  const int corrections = fresh_ ? settings_.refinements : settings_.keptRounds;
-  for (int k = 0;; ++k) {
-    Eigen::VectorXd residual = rhs - system_->times(x);
-    residual += system_->shift().cwiseProduct(x);
-    if (residual.cwiseAbs().maxCoeff() <= settings_.refinementTolerance * residualScale(rhs, x)) {
-      return true;
-    }
-    if (k == corrections) return fresh_;
-    if (!fresh_ && k > 0) ++extraSolves_;
-    x += factors_->solve(residual);
-  }
-}
-
-Eigen::VectorXd KeptFactorization::solve(const Eigen::VectorXd& rhs,
-                                         const Eigen::VectorXd& centre) {
-  Eigen::VectorXd x;
-  if (!fresh_ && solveProximal(rhs, centre, x)) return x;
-  if (!fresh_ && !factorize()) return Eigen::VectorXd::Constant(rhs.size(), std::nan(""));
-  solveProximal(rhs, centre, x);
-  return x;
-}
-
 ContactState stateOfImpulses(double normalImpulse, double tangentImpulse, double friction) {
   if (!(normalImpulse > 0.0)) return ContactState::Separated;
   const double limit = friction * normalImpulse * (1.0 - 1e-9);
@@ -759,7 +592,7 @@ std::optional<Eigen::VectorXd> solveGuessSystem(const GuessSystem& system,
   return system.impulses(unknowns);
 }
 
-/// What the answer breaks (violations), measured against flipTolerance of its impulse scale.
+/// What the answer breaks (violations), measured against kFlipTolerance of its impulse scale.
 std::vector<Violation> violationsOfAnswer(const IslandProblem& problem,
                                           const std::vector<ContactState>& states,
                                           const Eigen::VectorXd& impulses,
@@ -767,7 +600,7 @@ std::vector<Violation> violationsOfAnswer(const IslandProblem& problem,
                                           const Eigen::VectorXd& diagonal,
                                           const ActiveSetSettings& settings) {
   const Eigen::VectorXd velocity = free + delassusTimes(problem, impulses);
-  const double tolerance = settings.flipTolerance * impulseScale(impulses, free, diagonal);
+  const double tolerance = kFlipTolerance * impulseScale(impulses, free, diagonal);
   return violations(problem, states, impulses, velocity, diagonal, tolerance,
                     settings.enterSliding);
 }

@@ -17,6 +17,19 @@
 namespace impulse2d {
 namespace {
 
+// Lemke's tolerances tell round-off from a pivot or a tie; they are not for tuning.
+
+/// A column entry must exceed this times the column's largest entry (or 1) to be a pivot:
+/// smaller entries are round-off of zeros, and pivoting on one wrecks the basis inverse.
+constexpr double kPivotTolerance = 1e-9;
+/// Ratios closer than this (relative) count as a tie, broken lexicographically: they differ by
+/// round-off alone.
+constexpr double kTieTolerance = 1e-12;
+/// Harris's ratio test (RatioTest::Harris) may overshoot a basic variable by this much, relative
+/// to the largest basic value, to take a larger pivot: round-off's size, so no variable leaves
+/// its bound by more.
+constexpr double kHarrisTolerance = 1e-11;
+
 /// The revised tableau: B⁻¹, the values of the basic variables, and which variable each row holds.
 struct LemkeTableau {
   Eigen::MatrixXd basisInverse;
@@ -75,10 +88,8 @@ std::vector<int> smallestRatios(const std::vector<int>& candidates, const Ratio&
 /// rows with yᵢ > 0, compared entry by entry. It keeps the basis lexicographically positive,
 /// which rules out cycling. The artificial variable wins any tie of the first entry. −1: no
 /// row limits the step (a ray).
-int leavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
-               const LemkeSettings& options, int artificial) {
-  const double smallestPivot =
-      options.pivotTolerance * std::max(1.0, direction.cwiseAbs().maxCoeff());
+int leavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction, int artificial) {
+  const double smallestPivot = kPivotTolerance * std::max(1.0, direction.cwiseAbs().maxCoeff());
   std::vector<int> candidates;
   for (int row = 0; row < direction.size(); ++row) {
     if (direction(row) > smallestPivot) candidates.push_back(row);
@@ -86,29 +97,27 @@ int leavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
   if (candidates.empty()) return -1;
   candidates = smallestRatios(
       candidates, [&](int row) { return tableau.basicValues(row) / direction(row); },
-      options.tieTolerance);
+      kTieTolerance);
   for (int row : candidates) {
     if (tableau.basicVariable[row] == artificial) return row;
   }
   for (int column = 0; candidates.size() > 1 && column < direction.size(); ++column) {
     candidates = smallestRatios(
         candidates, [&](int row) { return tableau.basisInverse(row, column) / direction(row); },
-        options.tieTolerance);
+        kTieTolerance);
   }
   return candidates.front();
 }
 
-/// Harris's ratio test: the step may overshoot a basic variable by `harrisTolerance` (relative to
+/// Harris's ratio test: the step may overshoot a basic variable by kHarrisTolerance (relative to
 /// the largest basic value), and among the rows it then allows the one with the largest pivot is
 /// taken. It trades the lexicographic rule's guard against cycling (the pivot limit still ends a
 /// cycle) for never pivoting on a small entry when a larger one is nearly as good: on a landing
 /// pile the lexicographic rule can take an entry of 1e-8, and the path never recovers.
 int harrisLeavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
-                     const LemkeSettings& options, int artificial) {
-  const double smallestPivot =
-      options.pivotTolerance * std::max(1.0, direction.cwiseAbs().maxCoeff());
-  const double slack =
-      options.harrisTolerance * std::max(1.0, tableau.basicValues.cwiseAbs().maxCoeff());
+                     int artificial) {
+  const double smallestPivot = kPivotTolerance * std::max(1.0, direction.cwiseAbs().maxCoeff());
+  const double slack = kHarrisTolerance * std::max(1.0, tableau.basicValues.cwiseAbs().maxCoeff());
   double bound = std::numeric_limits<double>::infinity();
   for (int row = 0; row < direction.size(); ++row) {
     if (direction(row) > smallestPivot) {
@@ -138,10 +147,9 @@ int firstLeavingRow(const Eigen::VectorXd& q, const Eigen::VectorXd& covering) {
 
 /// The row whose variable leaves next, by the path's ratio test; −1 on a ray.
 int nextLeavingRow(const LemkeTableau& tableau, const Eigen::VectorXd& direction,
-                   const LemkePath& path, const LemkeSettings& options, int artificial) {
-  return path.ratioTest == RatioTest::Harris
-             ? harrisLeavingRow(tableau, direction, options, artificial)
-             : leavingRow(tableau, direction, options, artificial);
+                   const LemkePath& path, int artificial) {
+  return path.ratioTest == RatioTest::Harris ? harrisLeavingRow(tableau, direction, artificial)
+                                             : leavingRow(tableau, direction, artificial);
 }
 
 /// The start B = I: every w basic, at its value in q.
@@ -256,7 +264,7 @@ LcpSolution solveLemke(const Eigen::MatrixXd& m, const Eigen::VectorXd& q, const
       return failed(solution, "Lemke: the tableau overflowed after " +
                                   std::to_string(solution.pivots) + " pivots");
     }
-    row = nextLeavingRow(tableau, direction, path, options, artificial);
+    row = nextLeavingRow(tableau, direction, path, artificial);
     if (row < 0) {
       return failed(solution, "Lemke: secondary ray after " + std::to_string(solution.pivots) +
                                   " pivots (no solution found from this start)");

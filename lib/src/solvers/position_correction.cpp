@@ -24,7 +24,7 @@ void moveBody(Body& body, const Vec2& push, const Vec2& where) {
 struct Correction {
   const PositionPassSettings& pass;
   double allowedPenetration;
-  const BlockSolveSettings& block;
+  double blockConditionLimit;
 };
 
 /// A manifold's point at the bodies' current poses: where it is (contactPointBetween the surface
@@ -88,7 +88,7 @@ BlockCorrection correctTogether(const StepContext& context, int manifoldIndex,
                     wantedRemoval(points[1].penetration, correction));
   if (wanted(0) <= 0.0 && wanted(1) <= 0.0) return BlockCorrection::NothingToRemove;
   const Mat2 k = normalCouplingMatrix(a, b, manifold.normal, points[0].where, points[1].where);
-  if (!isWellConditioned(k, correction.block.conditionLimit)) {
+  if (!isWellConditioned(k, correction.blockConditionLimit)) {
     return BlockCorrection::IllConditioned;
   }
   const Vec2 pushes = solveTwoPointLcp(k, -wanted);
@@ -107,7 +107,7 @@ bool correctionSweep(const StepContext& context, const Correction& correction, i
   bool moved = false;
   for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     const int points = context.manifolds[m].pointCount;
-    if (correction.block.enabled && points == 2) {
+    if (correction.pass.blockSolve && points == 2) {
       const BlockCorrection block = correctTogether(context, m, correction, sweep);
       moved = moved || block == BlockCorrection::Moved;
       if (block != BlockCorrection::IllConditioned) continue;
@@ -123,8 +123,8 @@ bool correctionSweep(const StepContext& context, const Correction& correction, i
 // The sweeps stop at the first that moves nothing (Box2D 2.4 stops once no contact is deeper
 // than three slops; this stop changes no result): a resting pile, all within the slop, costs one.
 void correctPositions(const StepContext& context, const PositionPassSettings& pass,
-                      double allowedPenetration, const BlockSolveSettings& block) {
-  const Correction correction{pass, allowedPenetration, block};
+                      double allowedPenetration, double blockConditionLimit) {
+  const Correction correction{pass, allowedPenetration, blockConditionLimit};
   for (int sweep = 0; sweep < pass.iterations; ++sweep) {
     if (!correctionSweep(context, correction, sweep)) break;
   }

@@ -28,6 +28,20 @@ enum LcpVariable {
 };
 constexpr int kVariablesPerPoint = 4;
 
+// Lemke's retries on a degenerate island: the textbook remedies, each answer checked against the
+// unperturbed problem, so none can pass unnoticed; they are not for tuning.
+
+/// A resting pile is massively degenerate (many zero velocities); in floating point the
+/// lexicographic rule can then still end on a ray. Lemke is retried once with q moved by this
+/// much, relative to its largest entry and growing along the rows: round-off's size, far below
+/// the residual the answer is checked to.
+constexpr double kDegeneracyPerturbation = 1e-10;
+/// Then Lemke is tried with Harris's ratio test, and then along this many other covering vectors
+/// (entries drawn in [0.5, 2) from a fixed seed), each with both ratio tests: every path ends at a
+/// solution in exact arithmetic, but on a landing pile round-off and tiny pivots end some of them
+/// on a ray or an answer the residual check rejects.
+constexpr int kCoveringRetries = 3;
+
 const ContactPoint& pointOf(const StepContext& context, int manifold, int point) {
   return context.manifolds[manifold].points[point];
 }
@@ -110,9 +124,9 @@ struct LemkeAttempt {
   std::string name;
 };
 
-/// Attempt number k (0 ≤ k < 3 + 2·coveringRetries) in the order they are tried: the
+/// Attempt number k (0 ≤ k < 3 + 2·kCoveringRetries) in the order they are tried: the
 /// lexicographic path, the same on a slightly perturbed q (the textbook remedy for degeneracy),
-/// Harris's ratio test, then both ratio tests along `coveringRetries` other covering vectors.
+/// Harris's ratio test, then both ratio tests along kCoveringRetries other covering vectors.
 /// Each answer is checked against the physical conditions of the unperturbed problem; the first
 /// that passes is used, so the later ones are built only when needed.
 LemkeAttempt lemkeAttempt(int size, int k) {
@@ -555,10 +569,10 @@ LcpSolution ReferenceSolver::solveByLemke(const std::vector<int>& island) const 
   const int size = static_cast<int>(vector.size());
   const Eigen::VectorXd growing = Eigen::VectorXd::LinSpaced(size, 1.0, 2.0);
   const double perturbation =
-      size > 0 ? settings_.degeneracyPerturbation * vector.cwiseAbs().maxCoeff() : 0.0;
+      size > 0 ? kDegeneracyPerturbation * vector.cwiseAbs().maxCoeff() : 0.0;
   std::string failures;
   int pivots = 0;
-  for (int k = 0; k < 3 + 2 * settings_.coveringRetries; ++k) {
+  for (int k = 0; k < 3 + 2 * kCoveringRetries; ++k) {
     const LemkeAttempt attempt = lemkeAttempt(size, k);
     LcpSolution solution = solveLemke(
         matrix, attempt.perturbed ? Eigen::VectorXd(vector + perturbation * growing) : vector,
@@ -721,7 +735,7 @@ void ReferenceSolver::fail(const std::string& reason) {
 
 void ReferenceSolver::solvePositions(const StepContext& context) {
   correctPositions(context, settings_.positionPass, settings_.targets.allowedPenetration,
-                   settings_.positionBlock);
+                   settings_.blockConditionLimit);
 }
 
 }  // namespace impulse2d

@@ -267,10 +267,8 @@ void SequentialImpulseSolver::reportPoints(const StepContext& context,
 }
 
 void SequentialImpulseSolver::solvePositions(const StepContext& context) {
-  BlockSolveSettings positionBlock = settings_.block;
-  positionBlock.enabled = settings_.blockPositionCorrection;
   correctPositions(context, settings_.positionPass, settings_.targets.allowedPenetration,
-                   positionBlock);
+                   settings_.block.conditionLimit);
 }
 
 }  // namespace impulse2d

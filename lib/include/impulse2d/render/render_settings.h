@@ -152,8 +152,8 @@ struct RenderSettings {
   /// Width of a sheet's scene (pixels): a cell, or one panel of a comparison's cell. The scene is
   /// drawn again at this size, not shrunk, so its text and arrows keep sheetTextSize.
   int sheetCellWidth = 480;
-  /// Font size (pixels) of a sheet's captions, title, legend and scenes: readable at 100 % on a
-  /// slide and on an A4 page.
+  /// Font size (pixels) of a sheet's captions, title, legend and scenes: readable at full size on
+  /// a slide and on an A4 page.
   double sheetTextSize = 14.0;
   /// Comparison panels are laid out in the grid whose whole image is nearest this aspect ratio
   /// (a 16:9 slide).

@@ -33,7 +33,7 @@ struct LcpSolution {
 /// How a Lemke path chooses the leaving variable among near-ties of the ratio test.
 enum class RatioTest {
   Lexicographic,  ///< exact ties broken by B⁻¹'s rows: cannot cycle, may take a tiny pivot
-  Harris          ///< overshoot by harrisTolerance allowed, then the largest pivot wins
+  Harris          ///< overshoot by round-off allowed, then the largest pivot wins
 };
 
 /// One path of Lemke's method: the covering vector d > 0 of the artificial variable

@@ -39,6 +39,9 @@ class MicroCollisionSolver : public ContactSolver {
   const MicroCollisionSettings& settings() const { return settings_; }
 
  private:
+  /// The parts of a (normal, tangent) pair: velocities, velocity changes and impulses at a contact.
+  static double normalPart(const Vec2& pair) { return pair.x(); }
+  static double tangentPart(const Vec2& pair) { return pair.y(); }
   /// Whether an update's impulses at a point add up to one micro-collision (impulse totals).
   bool pointTotals() const { return settings_.impulses >= MicroCollisionImpulses::PointTotals; }
 

@@ -38,13 +38,13 @@ struct MicroCollisionSettings {
   /// smaller than this is none (the point is not marked as bounced).
   double velocityEpsilon = 1e-4;
   /// m. Penetration resolution stops when no contact penetrates deeper than this: resting bodies
-  /// settle at up to this overlap. With block moves 1e-4 keeps a stack straight at half the cost
-  /// of 1e-5 (the lecture preset, one corner at a time, needs 1e-5; Millington's engine uses
-  /// 0.01; docs/micro-collisions.md).
+  /// settle at up to this overlap. With block moves a stack stays straight at this epsilon, and a
+  /// tighter one only costs time (the lecture preset, one corner at a time, needs 1e-5 to settle
+  /// level; Millington's engine uses 0.01; docs/micro-collisions.md).
   double positionEpsilon = 1e-4;
   /// Velocity resolution may apply at most this many impulses per contact point in a step: a
-  /// stack passes weight down one contact at a time, and a 10-box stack needs about 200 to hold
-  /// still (docs/micro-collisions.md).
+  /// stack passes weight down one contact at a time, so a tall stack needs many to hold still
+  /// (docs/micro-collisions.md).
   int velocityIterationsPerContact = 200;
   /// Penetration resolution may resolve at most this many times per contact point in a step.
   int positionIterationsPerContact = 8;
@@ -76,9 +76,9 @@ struct MicroCollisionSettings {
   bool blockMoves = true;
   /// Past the cap while progressing: a step at velocityIterationsPerContact goes on while the
   /// waiting points' total velocity change still falls by minimumProgress over progressRounds
-  /// rounds, up to velocityIterationsPerContactLimit (a 40-row pyramid's first step needs 321).
+  /// rounds, up to velocityIterationsPerContactLimit (docs/design/micro-collision-cost.md).
   bool passCapWhileProgressing = true;
-  /// Rounds of one impulse per point over which progress is measured (at least 1; fewer never
+  /// Rounds of one impulse per point over which progress is judged (at least 1; fewer never
   /// pass the cap).
   int progressRounds = 20;
   /// The least fraction by which the waiting total must fall over progressRounds rounds.

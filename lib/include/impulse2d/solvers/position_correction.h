@@ -16,9 +16,10 @@
 namespace impulse2d {
 
 /// Runs the pass over the context's manifolds, leaving `allowedPenetration` (the solver's slop)
-/// alone; reports each correction to the observer (phase Position, iteration = sweep,
-/// desiredChange = the penetration it removed).
+/// alone; with the pass's block solve, a two-point contact is one block while k₀₀² <
+/// blockConditionLimit × det K. Reports each correction to the observer (phase Position,
+/// iteration = sweep, desiredChange = the penetration it removed).
 void correctPositions(const StepContext& context, const PositionPassSettings& pass,
-                      double allowedPenetration, const BlockSolveSettings& block);
+                      double allowedPenetration, double blockConditionLimit);
 
 }  // namespace impulse2d

@@ -6,7 +6,8 @@
 
 namespace impulse2d {
 
-/// Lemke's complementary pivoting (lcp.h): how it may pivot.
+/// Lemke's complementary pivoting (lcp.h): how long it may pivot. Its tolerances, which only
+/// tell round-off from a pivot or a tie, are constants of lcp.cpp.
 struct LemkeSettings {
   /// The method gives up (and says so) after this many pivots, or after maxPivotsPerVariable
   /// per variable of the problem if that is fewer.
@@ -14,20 +15,12 @@ struct LemkeSettings {
   /// A path that reaches a solution takes a few pivots per variable (at most 4 seen, on a
   /// 10-row pyramid's landing); one that round-off sends in circles would run to maxPivots.
   int maxPivotsPerVariable = 20;
-  /// A column entry must exceed this times the column's largest entry (or 1) to be a pivot:
-  /// smaller entries are round-off of zeros, and pivoting on one wrecks the basis inverse.
-  double pivotTolerance = 1e-9;
-  /// Ratios closer than this (relative) count as a tie, broken lexicographically.
-  double tieTolerance = 1e-12;
-  /// Harris's ratio test (RatioTest::Harris) may overshoot a basic variable by this much,
-  /// relative to the largest basic value, to take a larger pivot.
-  double harrisTolerance = 1e-11;
 };
 
 /// The active set's safeguard against cycling: what follows a flip that does not lower the number
 /// of violated points below the best seen.
 enum class CyclingSafeguard {
-  /// Júdice–Pires: blockFailures more block flips from where it is, then one point at a time.
+  /// Júdice–Pires: a few more block flips from where it is, then one point at a time.
   JudicePires,
   /// Go back to the best states and flip half as many of their violators, the worst first, then
   /// a quarter, … down to one, then one at a time. From rest a 40-row pyramid's first step falls
@@ -36,15 +29,14 @@ enum class CyclingSafeguard {
   Backtrack,
 };
 
-/// The active-set method (active_set.h) that solves the reference's large islands.
+/// The active-set method (active_set.h) that solves the reference's large islands. What only
+/// changes its cost, not its answer (how long the guess sweeps and GMRES go on), and its
+/// round-off tolerances are constants of active_set.cpp and kept_factorization.cpp.
 struct ActiveSetSettings {
   /// Projected Gauss–Seidel sweeps from last step's impulses that guess each point's state
-  /// (separated, sticking, sliding) before the first factorization.
+  /// (separated, sticking, sliding) before the first factorization; they go on after these while
+  /// a sweep still changes a point's state.
   int guessSweeps = 20;
-  /// After guessSweeps, the sweeps go on while one still changes a point's state, up to this
-  /// many: a pile's first step starts from zero impulses, and its states settle only once the
-  /// weight has reached the bottom, about one row a sweep.
-  int maxGuessSweeps = 400;
   /// A point solved last step (its impulses and state carried over by feature id) starts in the
   /// state it was solved in; only new points take the state the sweeps guess, and a pile
   /// with no new point skips the sweeps. The sweeps give an unloaded point of a resting pile a
@@ -55,9 +47,6 @@ struct ActiveSetSettings {
   int maxFactorizations = 200;
   /// What the method does after a flip that does not lower the number of violated points.
   CyclingSafeguard cyclingSafeguard = CyclingSafeguard::Backtrack;
-  /// Under Júdice–Pires: block flips in a row that do not lower the number of violated points
-  /// before the method flips one point at a time.
-  int blockFailures = 3;
   /// A separated point that the answer closes while it slips takes up sliding against its slip
   /// (λt = ∓μλn), as a contact that starts while slipping does, instead of sticking; a slide
   /// the next answer reverses makes it stick. Forcing such a point to stick can contradict other
@@ -77,22 +66,12 @@ struct ActiveSetSettings {
   bool centreOnGuess = true;
   /// Most corrections on fresh factors that take the regularization's shift out (proximal point
   /// steps; each removes all but about `regularization` of what is left, so one usually does).
-  /// On kept factors the corrections may go on for up to keptRounds.
+  /// On kept factors the corrections may go on for as many rounds as GMRES may take.
   int refinements = 3;
-  /// The corrections stop once the residual of the unregularized system is below this fraction
-  /// of |b| + |A||x|: a thousandth of residualTolerance, and above the floor that a pile's
-  /// redundant rows leave (about 1e-14, rising slowly as a resting pyramid settles).
-  double refinementTolerance = 1e-12;
-  /// A condition counts as violated beyond this fraction of the island's impulse scale.
-  double flipTolerance = 1e-12;
   /// The factors of each island's last factorized system are kept, and a step's first system of
   /// the same size is first solved by GMRES preconditioned by them (KeptFactorization): a
   /// resting pile then needs no factorization a step. Off: every system is factorized.
   bool keepFactors = true;
-  /// GMRES rounds on kept factors before the system is factorized after all, and then at most as
-  /// many corrections that take the regularization out: each costs one solve with the factors,
-  /// about 1/30 of a factorization of a 20-row pyramid's system.
-  int keptRounds = 8;
   /// Solves with kept factors beyond a system's first solve and first correction (GMRES
   /// rounds, further corrections), summed since the factors were made, after which the next
   /// system is factorized afresh. A large pile's factorization costs about as much as this many
@@ -100,14 +79,6 @@ struct ActiveSetSettings {
   /// have drifted from it pays at most about twice what a factorization at the right moment
   /// would cost, and one that rests on them pays nothing more.
   int refactorAfterSolves = 40;
-  /// A solve on kept factors is done once the residual of A x = b is below this fraction of
-  /// |b| + |A||x| (largest entries, largest row sum): the round-off of a solve on fresh factors.
-  double keptTolerance = 1e-14;
-  /// The factorization takes a row's own diagonal entry as its pivot when that entry is at
-  /// least this fraction of the largest in its column, so the symmetric fill-reducing order
-  /// holds; below, it pivots on the largest. The regularized pivots of a redundant pile are about
-  /// `regularization` of their column and must pass; 1 is partial pivoting.
-  double diagonalPivotThreshold = 1e-12;
 };
 
 /// The global solve of all contact impulses together: the accuracy reference.
@@ -115,18 +86,9 @@ struct ReferenceSolverSettings {
   /// Required residual of the physical conditions (N s), relative to the step's impulse scale:
   /// the largest of the impulses, each point's cancelling impulses and the contact bodies' momenta.
   double residualTolerance = 1e-9;
-  /// Lemke's pivot limit and tolerances; reaching the limit is reported, never silently accepted.
+  /// Lemke's pivot limit; reaching it is reported, never silently accepted. A path that fails is
+  /// retried along others (reference_solver.cpp, lemkeAttempt), each answer checked.
   LemkeSettings lemke;
-  /// A resting pile is massively degenerate (many zero velocities); in floating point the
-  /// lexicographic rule can then still end on a ray. Lemke is retried once with q moved by
-  /// this much (relative to its largest entry, growing along the rows), the textbook remedy;
-  /// the answer is checked against the unperturbed problem, so it cannot pass unnoticed.
-  double degeneracyPerturbation = 1e-10;
-  /// Then Lemke is tried with Harris's ratio test, and then along up to this many other covering
-  /// vectors (entries drawn in [0.5, 2) from a fixed seed), each with both ratio tests: every
-  /// path ends at a solution in exact arithmetic, but on a landing pile round-off and tiny pivots
-  /// end some of them on a ray or an answer the residual check rejects. 0: no such retries.
-  int coveringRetries = 3;
   /// Islands of up to this many contact points are solved by Lemke; larger ones by the active
   /// set, whose cost grows with the sparse factorization instead of Lemke's points³ (a stack of
   /// 10 boxes has 20 points, a 10-row pyramid 280).
@@ -152,8 +114,9 @@ struct ReferenceSolverSettings {
   ContactTargetSettings targets = unbiasedTargets();
   /// The same position pass as sequential impulses.
   PositionPassSettings positionPass;
-  /// The position pass corrects a two-point contact's corners together (as sequential impulses).
-  BlockSolveSettings positionBlock;
+  /// The position pass's block solve takes a two-point contact's corners together only while
+  /// k₀₀² < this × det K (Box2D's 1000, as sequential impulses' block.conditionLimit).
+  double blockConditionLimit = 1000.0;
 };
 
 }  // namespace impulse2d

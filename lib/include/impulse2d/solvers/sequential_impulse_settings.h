@@ -30,13 +30,10 @@ struct SequentialImpulseSettings {
   ImpulseAccumulation impulses = ImpulseAccumulation::WarmStarted;
   /// Bias and bounce targets.
   ContactTargetSettings targets;
-  /// The position pass after integration.
+  /// The position pass after integration; its block solve takes block.conditionLimit.
   PositionPassSettings positionPass;
   /// The block solve of two-point contacts' velocities (it needs accumulated impulses).
   BlockSolveSettings block;
-  /// The position pass corrects a two-point contact's corners together (true), or one corner at
-  /// a time, as Box2D 2.4's position solver does (false).
-  bool blockPositionCorrection = true;
   /// Friction before the normal impulses in each contact's solve, as Box2D 2.4 orders them ("non
   /// -penetration is more important than friction", so the normal has the last word in a sweep).
   /// False: the normal first, then friction against it, as Box2D-Lite and the text do. Needs
