@@ -40,8 +40,9 @@ struct ActiveSetSettings {
   /// A point solved last step (its impulses and state carried over by feature id) starts in the
   /// state it was solved in; only new points take the state the sweeps guess, and a pile
   /// with no new point skips the sweeps. The sweeps give an unloaded point of a resting pile a
-  /// little load, and the first factorization then finds it pulling: on a resting 20-row pyramid
-  /// 45–95 such points a step. Off: every point's state comes from the sweeps.
+  /// little load, and the first factorization then finds it pulling, every step of a resting
+  /// pile (docs/design/reference-active-set.md, "Warm states"). Off: every point's state comes
+  /// from the sweeps.
   bool warmStates = true;
   /// The method gives up (and says so) after this many factorizations.
   int maxFactorizations = 200;
