@@ -20,8 +20,7 @@ const page = {
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
   plotted: 0,        // when the plots were last drawn (performance.now())
   painter: null,     // the worker painting the views (web/painter.js), where there is one
-  painting: 0,       // frames handed to the painter and not yet painted
-  behind: false,     // a frame was left out while the painter had its next one waiting
+  painting: 0,       // frames handed to the painter and not yet painted or dropped
 };
 window.sandboxPage = page;
 
@@ -162,21 +161,11 @@ function stepOnce() {
   return true;
 }
 
-/// The frames the painter may hold per view: the one it paints and the next, made by the page's
-/// thread meanwhile, so the two threads work at once.
-const PAINTER_QUEUE = 2;
-
 /// Paints each run's frame in its view: by the painter (web/painter.js) where the browser can
-/// hand a canvas to a worker, else here. While the painter has a frame waiting, the newest state
-/// is painted when it takes that one up: a slow painter shows fewer frames, never late ones.
+/// hand a canvas to a worker, else here.
 function draw() {
   if (page.error) return;
-  const runs = activeRuns();
-  if (page.painter && page.painting >= PAINTER_QUEUE * runs.length) {
-    page.behind = true;
-    return;
-  }
-  runs.forEach((run, k) => {
+  activeRuns().forEach((run, k) => {
     if (page.painter) {
       const marks = run.frame();
       ++page.painting;
@@ -220,11 +209,7 @@ function startPainter(where) {
   });
   page.painter.onmessage = ({ data }) => {
     --page.painting;
-    if (data.view === 0) ++page.framesDrawn;
-    if (page.behind) {
-      page.behind = false;
-      draw();
-    }
+    if (data.painted && data.view === 0) ++page.framesDrawn;
   };
 }
 
