@@ -184,7 +184,9 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   manifold.bodyB = pair.second;
   const double distance = contactDistance(a, b, h);
   if (collide(a, b, distance, manifold) == 0) return false;
-  if (settings_.refuseInternalEdges &&
+  // Only a contact with a static body can lie on an internal edge.
+  const bool onStaticBody = a.isStatic() || b.isStatic();
+  if (settings_.refuseInternalEdges && onStaticBody &&
       dropInternalEdgePoints(bodies_, staticBodies_, manifold) == 0) {
     return false;
   }
