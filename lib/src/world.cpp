@@ -134,7 +134,8 @@ void World::findContacts(const ContactFinding& finding) {
 }
 
 // Candidate pairs and the last substep's manifolds are both sorted by (A, B), so one merge walk
-// keeps the manifolds of sleeping pairs and carries impulses over to the recomputed ones.
+// keeps the manifolds of sleeping pairs and carries impulses over to the recomputed ones. Each
+// pair's manifold is made in place at the end of the list, and taken back if it has no contact.
 void World::findContacts(double h, const ContactFinding& finding) {
   finding_ = finding;
   previousManifolds_.swap(manifolds_);
@@ -146,19 +147,20 @@ void World::findContacts(double h, const ContactFinding& finding) {
   for (const BodyPair& pair : candidatePairs_) {
     old = keepSleepingManifolds(old, pair);
     const bool hadManifold = old != previousManifolds_.cend() && keyOf(*old) == pair;
-    Manifold manifold;
+    Manifold& manifold = manifolds_.emplace_back();
     if (hadManifold && finding.keeping && finding.keeping->keep(*old, bodies_, manifold)) {
-      manifolds_.push_back(manifold);
       ++statistics_.reusedManifolds;
       continue;
     }
-    if (!collidePair(pair, h, manifold)) continue;
+    if (!collidePair(pair, h, manifold)) {
+      manifolds_.pop_back();
+      continue;
+    }
     if (hadManifold) carryOverImpulses(*old, manifold);
     if (finding.keeping) {
       finding.keeping->found(manifold, bodies_,
                              contactDistance(bodies_[pair.first], bodies_[pair.second], h));
     }
-    manifolds_.push_back(manifold);
   }
   keepSleepingManifolds(old, {int(bodies_.size()), 0});
 }
@@ -182,7 +184,9 @@ bool World::collidePair(const BodyPair& pair, double h, Manifold& manifold) {
   manifold.bodyB = pair.second;
   const double distance = contactDistance(a, b, h);
   if (collide(a, b, distance, manifold) == 0) return false;
-  if (settings_.refuseInternalEdges &&
+  // Only a contact with a static body can lie on an internal edge.
+  const bool onStaticBody = a.isStatic() || b.isStatic();
+  if (settings_.refuseInternalEdges && onStaticBody &&
       dropInternalEdgePoints(bodies_, staticBodies_, manifold) == 0) {
     return false;
   }
@@ -230,17 +234,14 @@ void World::findCandidatePairs(double h) {
   computeSweepBounds(h);
   sortSweepOrder();
   layOutSweep();
-  const double margin = settings_.contactMargin;
   candidatePairs_.clear();
-  for (size_t i = 0; i < sweep_.size(); ++i) {
+  const size_t count = sweep_.size();
+  for (size_t i = 0; i < count; ++i) {
     const SweepEntry& first = sweep_[i];
-    for (size_t j = i + 1; j < sweep_.size(); ++j) {
+    for (size_t j = i + 1; j < count; ++j) {
+      if (sweepLeft_[j] > first.reachRight) break;
       const SweepEntry& second = sweep_[j];
-      if (second.bounds.lower.x() > first.bounds.upper.x() + margin) break;
-      if (second.bounds.lower.y() > first.bounds.upper.y() + margin ||
-          first.bounds.lower.y() > second.bounds.upper.y() + margin) {
-        continue;
-      }
+      if (second.bottom > first.reachTop || first.bottom > second.reachTop) continue;
       if (!first.awake && !second.awake) continue;
       candidatePairs_.emplace_back(std::min(first.body, second.body),
                                    std::max(first.body, second.body));
@@ -249,19 +250,21 @@ void World::findCandidatePairs(double h) {
   sortCandidatePairs();
 }
 
-// The candidate pairs by (A, B), in time linear in their number: counted and placed by A (a
-// counting sort), then each body's few partners sorted by B.
+// The candidate pairs by (A, B), in time linear in their number: a radix sort, placed by B and
+// then, keeping that order, by A (two counting sorts).
 void World::sortCandidatePairs() {
-  pairsEnd_.assign(bodies_.size() + 1, 0);
-  for (const BodyPair& pair : candidatePairs_) ++pairsEnd_[pair.first + 1];
-  for (size_t i = 1; i < pairsEnd_.size(); ++i) pairsEnd_[i] += pairsEnd_[i - 1];
+  placeCandidatePairs(&BodyPair::second);
+  placeCandidatePairs(&BodyPair::first);
+}
+
+// One counting sort of the candidate pairs by one of their bodies, keeping the order of pairs with
+// the same body: counted, where each body's pairs start, then placed.
+void World::placeCandidatePairs(int BodyPair::*body) {
+  pairsStart_.assign(bodies_.size() + 1, 0);
+  for (const BodyPair& pair : candidatePairs_) ++pairsStart_[pair.*body + 1];
+  for (size_t i = 1; i < pairsStart_.size(); ++i) pairsStart_[i] += pairsStart_[i - 1];
   sortedPairs_.resize(candidatePairs_.size());
-  for (const BodyPair& pair : candidatePairs_) sortedPairs_[pairsEnd_[pair.first]++] = pair;
-  int begin = 0;
-  for (size_t a = 0; a < bodies_.size(); ++a) {
-    std::sort(sortedPairs_.begin() + begin, sortedPairs_.begin() + pairsEnd_[a]);
-    begin = pairsEnd_[a];
-  }
+  for (const BodyPair& pair : candidatePairs_) sortedPairs_[pairsStart_[pair.*body]++] = pair;
   candidatePairs_.swap(sortedPairs_);
 }
 
@@ -289,13 +292,19 @@ void World::sortSweepOrder() {
   }
 }
 
-// The bodies' bounds and awake flags copied in sweep order: the sweep's inner loop then reads
-// one contiguous array instead of jumping between bodies.
+// The bodies' bounds, their upper edges grown by the contact margin, and awake flags copied in
+// sweep order: the sweep's inner loop then reads contiguous arrays instead of jumping between
+// bodies, and the left edges it stops at lie apart, eight to a cache line.
 void World::layOutSweep() {
+  const double margin = settings_.contactMargin;
   sweep_.resize(sweepOrder_.size());
+  sweepLeft_.resize(sweepOrder_.size());
   for (size_t i = 0; i < sweepOrder_.size(); ++i) {
     const int body = sweepOrder_[i];
-    sweep_[i] = {sweepBounds_[body], body, bodies_[body].isAwake()};
+    const Aabb& bounds = sweepBounds_[body];
+    sweepLeft_[i] = bounds.lower.x();
+    sweep_[i] = {bounds.upper.x() + margin, bounds.lower.y(), bounds.upper.y() + margin, body,
+                 bodies_[body].isAwake()};
   }
 }
 

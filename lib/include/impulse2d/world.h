@@ -100,6 +100,7 @@ class World : public Simulation {
   void findContacts(double h, const ContactFinding& finding);
   void findCandidatePairs(double h);
   void sortCandidatePairs();
+  void placeCandidatePairs(int BodyPair::*body);
   void computeSweepBounds(double h);
   void sortSweepOrder();
   void layOutSweep();
@@ -131,18 +132,22 @@ class World : public Simulation {
   std::vector<int> solvedIndex_;             ///< where each of solverManifolds_ sits in manifolds_
   std::vector<BodyPair> candidatePairs_;
   std::vector<BodyPair> sortedPairs_;  ///< the candidate pairs being sorted
-  std::vector<int> pairsEnd_;          ///< by body A: where its pairs end in sortedPairs_
+  std::vector<int> pairsStart_;        ///< by body: where its pairs go in sortedPairs_
   std::vector<int> staticBodies_;      ///< indices of the static bodies, for internal edges
   std::vector<Pose> startPoses_;  ///< by body: where it began the substep (continuous collision)
-  /// One body in the sweep: its fattened bounds and whether it is awake.
+  /// One body in the sweep: its fattened bounds, the upper edges grown by the contact margin
+  /// (m), and whether it is awake.
   struct SweepEntry {
-    Aabb bounds;
+    double reachRight;
+    double bottom;
+    double reachTop;
     int body;
     bool awake;
   };
   std::vector<int> sweepOrder_;       ///< bodies by the left edge of their bounds
   std::vector<Aabb> sweepBounds_;     ///< by body: bounds fattened for speculative contacts
   std::vector<SweepEntry> sweep_;     ///< in sweep order, so the sweep reads memory in order
+  std::vector<double> sweepLeft_;     ///< m, in sweep order: the left edges the sweep stops at
   UnionFind islands_;                 ///< the islands, by body
   std::vector<char> islandAwake_;     ///< by island root
   std::vector<double> islandRested_;  ///< s, by island root: the shortest sleep time in it

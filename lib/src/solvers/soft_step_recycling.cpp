@@ -59,16 +59,19 @@ const FoundManifold* ContactRecycling::recordOf(const Manifold& previous,
 bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& bodies,
                             Manifold& kept) {
   const FoundManifold* found = recordOf(previous, bodies);
-  if (!found || !movedLittle(*found, previous, bodies)) return false;
+  if (!found || !mayKeep(previous, bodies)) return false;
   const Body& a = bodies[previous.bodyA];
   const Body& b = bodies[previous.bodyB];
+  const Mat2 turnA = turnSinceFound(a, found->pose.rotationA);
+  const Mat2 turnB = turnSinceFound(b, found->pose.rotationB);
+  if (!movedLittle(*found, previous, a, b, turnB * turnA.transpose())) return false;
   kept = previous;
   const bool roundSurfaces = settings_.roundSurfaces;
   const auto armTurn = [roundSurfaces](const Body& body, const Mat2& turn) {
     return !roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : Mat2::Identity();
   };
-  const Mat2 turnOfA = armTurn(a, turnSinceFound(a, found->pose.rotationA));
-  const Mat2 turnOfB = armTurn(b, turnSinceFound(b, found->pose.rotationB));
+  const Mat2 turnOfA = armTurn(a, turnA);
+  const Mat2 turnOfB = armTurn(b, turnB);
   for (int i = 0; i < kept.pointCount; ++i) {
     ContactPoint& point = kept.points[i];
     const FoundPoint& foundPoint = found->points[i];
@@ -92,17 +95,14 @@ bool ContactRecycling::mayKeep(const Manifold& manifold, const std::vector<Body>
   return !refined() || !normalRunsToCentre(a, b, manifold);
 }
 
+// Each body's turn since the manifold was found is taken once, by keep, for this test and for the
+// arms; `relativeTurn` is B's turn relative to A's.
 bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& previous,
-                                   const std::vector<Body>& bodies) const {
-  if (!mayKeep(previous, bodies)) return false;
-  const Body& a = bodies[previous.bodyA];
-  const Body& b = bodies[previous.bodyB];
+                                   const Body& a, const Body& b, const Mat2& relativeTurn) const {
   const double turnA = a.angle - found.pose.angleA;
   const double turnB = b.angle - found.pose.angleB;
   const double largestTurn = settings_.recycleLargestTurn;
   if (std::abs(turnA) > largestTurn || std::abs(turnB) > largestTurn) return false;
-  const Mat2 relativeTurn =
-      turnSinceFound(b, found.pose.rotationB) * turnSinceFound(a, found.pose.rotationA).transpose();
   const double sineOfRelativeTurn = relativeTurn(1, 0);
   const double moved =
       offsetMoved(a, b, found.pose) + found.pose.reach * std::abs(sineOfRelativeTurn);

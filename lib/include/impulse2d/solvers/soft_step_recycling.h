@@ -67,8 +67,8 @@ class ContactRecycling : public ManifoldKeeping {
   /// The record of `previous`, found in the last substep's records; the records passed on the way
   /// that the world keeps (their bodies all sleep) are carried over as they are.
   const FoundManifold* recordOf(const Manifold& previous, const std::vector<Body>& bodies);
-  bool movedLittle(const FoundManifold& found, const Manifold& previous,
-                   const std::vector<Body>& bodies) const;
+  bool movedLittle(const FoundManifold& found, const Manifold& previous, const Body& a,
+                   const Body& b, const Mat2& relativeTurn) const;
   double recycleDistance(const FoundManifold& found, const Manifold& previous) const;
   double offsetMoved(const Body& a, const Body& b, const FoundPose& found) const;
 
