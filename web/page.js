@@ -202,7 +202,11 @@ function draw() {
 function startPainter(where) {
   const views = [$("view"), $("view2")];
   if (!window.OffscreenCanvas || !views[0].transferControlToOffscreen || where === "page") return;
-  page.painter = new Worker("painter.js");
+  try {
+    page.painter = new Worker("painter.js");
+  } catch (error) {
+    return;  // the browser refused the worker: the page paints its views itself
+  }
   views.forEach((view, k) => {
     const canvas = view.transferControlToOffscreen();
     page.painter.postMessage({ view: k, canvas }, [canvas]);
