@@ -44,11 +44,12 @@ class PathWriter {
   /// Writes " 12.34" for 1234 hundredths (" -0.05" for -5, " 3.1" for 310, " 3" for 300).
   void fixed(long long value) {
     makeRoom();
+    char* const room = cursor_ + kMostPerNumber;  // within the buffer: makeRoom saw to it
     *cursor_++ = ' ';
     if (value < 0) *cursor_++ = '-';
     const unsigned long long magnitude = value < 0 ? 0ull - static_cast<unsigned long long>(value)
                                                    : static_cast<unsigned long long>(value);
-    cursor_ = std::to_chars(cursor_, cursor_ + kMostPerNumber, magnitude / 100).ptr;
+    cursor_ = std::to_chars(cursor_, room, magnitude / 100).ptr;
     const unsigned fraction = unsigned(magnitude % 100);
     if (fraction != 0) {
       *cursor_++ = '.';
