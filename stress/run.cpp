@@ -40,6 +40,8 @@ std::vector<Method> extraMethods() {
        "sequential",
        {"solver.impulses=clamped_each", "world.substeps=4"}},
       {"sequential + 4 substeps", "sequential", {"world.substeps=4"}},
+      // The text's sweeps: without the conjugate gradient's push between them.
+      {"sequential − conjugate gradient", "sequential", {"solver.conjugate_gradient=false"}},
       {"sequential + speculative contacts", "sequential", {"world.speculative_contacts=true"}},
       {"sequential − bias", "sequential", {"solver.penetration_bias=false"}},
       {"soft step − speculative contacts", "soft_step", {"solver.speculative_contacts=false"}},

@@ -58,7 +58,8 @@ impulse2d::render::FigureTable figureTable(const std::vector<StepFigures>& figur
 void EventLog::onSolverEvent(const impulse2d::SolverEvent& event,
                              const std::vector<impulse2d::Body>&,
                              const std::vector<impulse2d::Manifold>&) {
-  if (!event.changesVelocity()) return;
+  // A push between sweeps wants no velocity change of its own.
+  if (!event.changesVelocity() || event.phase == impulse2d::SolverEvent::Phase::Push) return;
   errors_.push_back(std::abs(event.desiredChange));
   iterations_.push_back(event.iteration);
 }

@@ -192,6 +192,7 @@ SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
   SequentialImpulseSettings settings;
   settings.velocityIterations = 10;
   settings.convergedImpulseChange = 0.0;
+  settings.conjugateGradient = false;
   settings.targets.allowedPenetration = 0.01;
   settings.targets.maxPushVelocity = kNoLimit;       // Box2D-Lite caps no bias
   settings.targets.restitutionThreshold = kNoLimit;  // and has no bounce
@@ -205,6 +206,7 @@ SequentialImpulseSettings SequentialImpulseSettings::box2d24() {
   SequentialImpulseSettings settings;
   settings.velocityIterations = 8;
   settings.convergedImpulseChange = 0.0;
+  settings.conjugateGradient = false;
   settings.frictionFirst = true;
   settings.targets.penetrationBias = false;
   settings.positionPass.blockSolve = false;
@@ -229,7 +231,10 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
                  {"block_condition_limit", &s.block.conditionLimit, "", closed(1.0, 1e12),
                   "a two-point contact is a block only while k₀₀² < this × det K"},
                  {"friction_first", &s.frictionFirst, "", kNone,
-                  "friction before the normal impulses in each contact's solve (Box2D 2.4)"}});
+                  "friction before the normal impulses in each contact's solve (Box2D 2.4)"},
+                 {"conjugate_gradient", &s.conjugateGradient, "", kNone,
+                  "after each sweep, push the impulses on along the sweeps' direction "
+                  "(nonsmooth conjugate gradient)"}});
   return fields;
 }
 

@@ -20,8 +20,9 @@ struct SolverEvent {
   /// Which pass of the step the event belongs to: the velocity sweeps, the position pass, a relax
   /// sweep (the velocities solved again without the push-out bias, after the positions moved) or
   /// a restitution pass after the sweeps, which gives a closing contact its bounce.
-  enum class Phase { Velocity, Position, Relax, Restitution };
-  /// velocity, position, relax or restitution pass
+  enum class Phase { Velocity, Position, Relax, Restitution, Push };
+  /// velocity, position, relax or restitution pass, or sequential impulses' push between sweeps
+  /// (their conjugate gradient)
   Phase phase = Phase::Velocity;
   /// 0-based: the micro-collision resolver counts its impulses (or moves) in this step,
   /// sequential impulses count their sweeps, a method of substeps its substeps.

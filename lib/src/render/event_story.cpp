@@ -108,6 +108,7 @@ std::string eventLabel(const SolverEvent& event, const std::string& solver) {
   }
   const char* pass = !event.changesVelocity()                   ? "position"
                      : event.phase == SolverEvent::Phase::Relax ? "relax"
+                     : event.phase == SolverEvent::Phase::Push  ? "push"
                      : solver == "soft_step"                    ? "substep"
                                                                 : "velocity";
   std::snprintf(label, sizeof label, "%s %d: contact %d.%d", pass, event.iteration, event.manifold,
@@ -133,9 +134,20 @@ EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
     story.lines.push_back(story.label);
     return story;
   }
-  story.lines.push_back(story.label + whyThisPoint(event, before, manifolds, solver, partner));
   const Manifold& manifold = manifolds[std::size_t(event.manifold)];
   const ContactPoint& point = manifold.points[event.point];
+  if (event.phase == SolverEvent::Phase::Push) {
+    story.lines.push_back(story.label +
+                          ", on along the last sweeps' direction (conjugate gradient)");
+    story.lines.push_back(format("closing speed %.3f → %.3f m/s",
+                                 closingSpeed(before, manifold, point.point),
+                                 closingSpeed(after, manifold, point.point)));
+    story.lines.push_back(
+        format("pushed λ_n by %.4f N s, λ_t by %.4f N s; the next sweep clamps the totals",
+               event.normalImpulse, event.tangentImpulse));
+    return story;
+  }
+  story.lines.push_back(story.label + whyThisPoint(event, before, manifolds, solver, partner));
   const Vec2 accelerations = after[std::size_t(manifold.bodyB)].lastAcceleration -
                              after[std::size_t(manifold.bodyA)].lastAcceleration;
   story.lines.push_back(format("closing speed %.3f → %.3f m/s; Δv wanted %.3f m/s",

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "impulse2d/solvers/contact_math.h"
 #include "impulse2d/solvers/position_correction.h"
@@ -23,13 +24,48 @@ void SequentialImpulseSolver::solveVelocities(const StepContext& context) {
   report_ = SolveReport{};
   for (int sweep = 0; sweep < settings_.velocityIterations; ++sweep) {
     report_.residual = 0.0;
+    sweepChangeSquared_ = 0.0;
     for (const ManifoldState& manifold : manifoldStates_) {
       report_.residual = std::max(report_.residual, solveManifold(context, manifold, sweep));
     }
     report_.iterations = sweep + 1;
     if (converged()) break;
+    if (pushes() && sweep + 1 < settings_.velocityIterations) pushOn(context, sweep);
   }
   storeResults(context);
+}
+
+// The conjugate gradient's push after a sweep (settings' conjugateGradient): β from this sweep's
+// squared changes over the last's; from the first sweep, after a sweep that changed nothing, or
+// when β > 1 the direction starts again as this sweep's changes and nothing is pushed. The last
+// sweep of a step pushes nothing, so every total the step keeps was clamped by a sweep.
+void SequentialImpulseSolver::pushOn(const StepContext& context, int sweep) {
+  const double beta = sweep > 0 && lastChangeSquared_ > 0.0
+                          ? sweepChangeSquared_ / lastChangeSquared_
+                          : std::numeric_limits<double>::infinity();
+  lastChangeSquared_ = sweepChangeSquared_;
+  if (!(beta <= 1.0)) {
+    for (PointDirection& direction : directions_) direction.restartFromChange();
+    return;
+  }
+  for (const ManifoldState& manifold : manifoldStates_) {
+    const Vec2 tangent = leftPerpendicular(manifold.normal);
+    BodyPair bodies = loadBodies(manifold);
+    std::array<PointImpulse, 2> pushed;
+    for (int i = 0; i < manifold.pointCount; ++i) {
+      PointState& point = states_[manifold.firstPoint + i];
+      PointDirection& direction = directions_[manifold.firstPoint + i];
+      pushed[i].normalImpulse = beta * direction.normal;
+      pushed[i].tangentImpulse = beta * direction.tangent;
+      point.normalImpulse += pushed[i].normalImpulse;
+      point.tangentImpulse += pushed[i].tangentImpulse;
+      bodies.applyNormalImpulse(point, manifold.normal, pushed[i].normalImpulse);
+      bodies.applyTangentImpulse(point, tangent, pushed[i].tangentImpulse);
+      direction.continueWith(pushed[i]);
+    }
+    storeBodies(manifold, bodies);
+    if (context.observer) reportPoints(context, manifold, sweep, pushed, SolverEvent::Phase::Push);
+  }
 }
 
 // Converged: the last sweep changed no impulse (normal or friction) by more than the settings'
@@ -49,6 +85,8 @@ void SequentialImpulseSolver::prepare(const StepContext& context) {
   states_.clear();
   manifoldStates_.clear();
   const bool warm = settings_.impulses == ImpulseAccumulation::WarmStarted;
+  directions_.clear();
+  lastChangeSquared_ = 0.0;
   for (int m = 0; m < static_cast<int>(context.manifolds.size()); ++m) {
     const Manifold& manifold = context.manifolds[m];
     Body& a = context.bodies[manifold.bodyA];
@@ -74,6 +112,7 @@ void SequentialImpulseSolver::prepare(const StepContext& context) {
       state.normalImpulse = warm ? point.normalImpulse : 0.0;
       state.tangentImpulse = warm ? point.tangentImpulse : 0.0;
       states_.push_back(state);
+      if (pushes()) directions_.emplace_back();
     }
   }
 }
@@ -134,9 +173,15 @@ inline double SequentialImpulseSolver::solveManifold(const StepContext& context,
   }
   if (!settings_.frictionFirst) solveFrictions(manifold, bodies, impulses);
   storeBodies(manifold, bodies);
-  if (context.observer) reportPoints(context, manifold, sweep, impulses);
+  if (context.observer)
+    reportPoints(context, manifold, sweep, impulses, SolverEvent::Phase::Velocity);
   double largestChange = 0.0;
   for (int i = 0; i < manifold.pointCount; ++i) {
+    if (pushes()) {
+      directions_[manifold.firstPoint + i].change = impulses[i];
+      sweepChangeSquared_ += impulses[i].normalImpulse * impulses[i].normalImpulse +
+                             impulses[i].tangentImpulse * impulses[i].tangentImpulse;
+    }
     largestChange = std::max(
         {largestChange, std::abs(impulses[i].normalImpulse), std::abs(impulses[i].tangentImpulse)});
   }
@@ -257,12 +302,13 @@ void SequentialImpulseSolver::storeResults(const StepContext& context) const {
 // the sweeps.
 void SequentialImpulseSolver::reportPoints(const StepContext& context,
                                            const ManifoldState& manifold, int sweep,
-                                           const std::array<PointImpulse, 2>& impulses) const {
+                                           const std::array<PointImpulse, 2>& impulses,
+                                           SolverEvent::Phase phase) const {
   storeResults(context);
   for (int i = 0; i < manifold.pointCount; ++i) {
     const PointImpulse& impulse = impulses[i];
-    context.report({SolverEvent::Phase::Velocity, sweep, manifold.manifold, i,
-                    impulse.desiredChange, impulse.normalImpulse, impulse.tangentImpulse});
+    context.report({phase, sweep, manifold.manifold, i, impulse.desiredChange,
+                    impulse.normalImpulse, impulse.tangentImpulse});
   }
 }
 

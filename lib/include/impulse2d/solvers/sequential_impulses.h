@@ -45,6 +45,8 @@ class SequentialImpulseSolver : public ContactSolver {
  private:
   /// Whether each contact's running total is clamped (accumulated impulses), not each impulse.
   bool accumulated() const { return settings_.impulses != ImpulseAccumulation::ClampedEach; }
+  /// Whether the conjugate gradient pushes between sweeps: it needs totals to clamp.
+  bool pushes() const { return settings_.conjugateGradient && accumulated(); }
 
   /// Per contact point, computed once before the sweeps (Box2D-Lite's PreStep).
   struct PointState {
@@ -104,11 +106,29 @@ class SequentialImpulseSolver : public ContactSolver {
     double normalImpulse = 0.0;
     double tangentImpulse = 0.0;
   };
+  /// Per contact point, the conjugate gradient's record (settings' conjugateGradient): what the
+  /// last sweep changed, and the direction the push follows (N s).
+  struct PointDirection {
+    PointImpulse change;
+    double normal = 0.0;
+    double tangent = 0.0;
+    /// The direction starts again as the last sweep's changes.
+    void restartFromChange() {
+      normal = change.normalImpulse;
+      tangent = change.tangentImpulse;
+    }
+    /// After a push: the direction is the push plus the last sweep's changes.
+    void continueWith(const PointImpulse& pushed) {
+      normal = pushed.normalImpulse + change.normalImpulse;
+      tangent = pushed.tangentImpulse + change.tangentImpulse;
+    }
+  };
 
   void prepare(const StepContext& context);
   void prepareBodies(const StepContext& context);
   void addManifoldState(const StepContext& context, int manifold);
   void warmStart();
+  void pushOn(const StepContext& context, int sweep);
   bool converged() const;
   double solveManifold(const StepContext& context, const ManifoldState& manifold, int sweep);
   void solveNormal(const ManifoldState& manifold, PointState& point, BodyPair& bodies,
@@ -136,12 +156,15 @@ class SequentialImpulseSolver : public ContactSolver {
                               double normalImpulseThisSweep) const;
   void storeResults(const StepContext& context) const;
   void reportPoints(const StepContext& context, const ManifoldState& manifold, int sweep,
-                    const std::array<PointImpulse, 2>& impulses) const;
+                    const std::array<PointImpulse, 2>& impulses, SolverEvent::Phase phase) const;
 
   SequentialImpulseSettings settings_;
   std::vector<SolverBody> solverBodies_;
   std::vector<PointState> states_;
   std::vector<ManifoldState> manifoldStates_;
+  std::vector<PointDirection> directions_;  ///< one per point of states_, when pushes()
+  double sweepChangeSquared_ = 0.0;         ///< (N s)², the sum over this sweep's changes
+  double lastChangeSquared_ = 0.0;          ///< (N s)², the same for the sweep before
   SolveReport report_;
 };
 
