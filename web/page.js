@@ -131,8 +131,10 @@ const activeRuns = () => (page.compare ? page.runs.slice(0, 2) : page.runs.slice
 // (a pyramid40 takes seconds); the view is drawn again when it is done.
 const SURVEY_FIRST = 200, SURVEY_EACH = 4;
 
-// While the run plays, the plots are drawn again this often (ms), not every frame: redrawing
-// them costs the pyramid a quarter of its frame rate.
+// While the run plays, the plots and the step count under the controls are drawn again this
+// often (ms), not every frame: redrawing the plots costs the pyramid a quarter of its frame
+// rate, and a changed count lays out, paints and composites the page again (the frame's own
+// heads-up shows each step).
 const PLOT_EVERY = 100;
 
 /// Surveys the runs for up to `milliseconds` each; true once all are done, their force scales
@@ -187,10 +189,10 @@ function draw() {
   };
   show("view-label", page.solver + (page.preset ? ` (${page.preset})` : ""));
   show("view2-label", page.compare.replace(":", " preset "));
-  show("status", `step ${run.stepCount()} of ${run.steps()}` +
-                 (page.surveying ? " (framing the whole run…)" : ""));
   const now = performance.now();
   if (!page.playing || run.stepCount() >= run.steps() || now - page.plotted >= PLOT_EVERY) {
+    show("status", `step ${run.stepCount()} of ${run.steps()}` +
+                   (page.surveying ? " (framing the whole run…)" : ""));
     plot();
     page.plotted = now;
   }
