@@ -107,20 +107,32 @@ void writePolyline(PathWriter& out, const render::Outline& outline) {
   if (outline.closed) out.letter('Z');
 }
 
-void appendOutlines(EncodedMarks& encoded, const render::Mark& mark) {
+/// Appends the mark's colour, width and path data, "=" where it is that of the mark before (`last`
+/// is where that one's starts in encoded.paths, npos if the mark before has none), and sets
+/// `last` to where this one's starts.
+void appendOutlines(EncodedMarks& encoded, const render::Mark& mark, std::size_t& last) {
   const render::Color& c = mark.colour;
   encoded.numbers.insert(encoded.numbers.end(),
                          {double(c.r), double(c.g), double(c.b), double(c.a), mark.size});
-  PathWriter out(encoded.paths);
-  for (const render::Outline& outline : mark.outlines) {
-    if (outline.points.empty()) continue;
-    if (outline.radius > 0.0) {
-      writeCircle(out, outline.points.front(), outline.radius);
-    } else {
-      writePolyline(out, outline);
+  const std::size_t start = encoded.paths.size();
+  {
+    PathWriter out(encoded.paths);
+    for (const render::Outline& outline : mark.outlines) {
+      if (outline.points.empty()) continue;
+      if (outline.radius > 0.0) {
+        writeCircle(out, outline.points.front(), outline.radius);
+      } else {
+        writePolyline(out, outline);
+      }
     }
+    out.letter('|');
   }
-  out.letter('|');
+  const std::size_t length = encoded.paths.size() - start;
+  if (last != std::string::npos && length > 1 && start - last == length &&
+      encoded.paths.compare(last, length, encoded.paths, start, length) == 0) {
+    encoded.paths.replace(start, length, "=|");
+  }
+  last = start;
 }
 
 }  // namespace
@@ -128,14 +140,15 @@ void appendOutlines(EncodedMarks& encoded, const render::Mark& mark) {
 EncodedMarks encodeMarks(const std::vector<render::Mark>& marks) {
   EncodedMarks encoded;
   encoded.paths.reserve(1 << 19);
+  std::size_t last = std::string::npos;
   for (const render::Mark& mark : marks) {
     encoded.numbers.push_back(double(mark.kind));
     const render::Color& c = mark.colour;
     switch (mark.kind) {
       case render::Mark::Kind::Fill:
       case render::Mark::Kind::Stroke:
-        appendOutlines(encoded, mark);
-        break;
+        appendOutlines(encoded, mark, last);
+        continue;
       case render::Mark::Kind::Text:
         encoded.numbers.insert(encoded.numbers.end(),
                                {double(c.r), double(c.g), double(c.b), double(c.a), mark.size,
@@ -150,6 +163,7 @@ EncodedMarks encodeMarks(const std::vector<render::Mark>& marks) {
       case render::Mark::Kind::Restore:
         break;
     }
+    last = std::string::npos;
   }
   return encoded;
 }

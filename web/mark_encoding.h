@@ -16,7 +16,8 @@ struct EncodedMarks {
   /// (r, g, b, a) and line width; for Text the colour, font size and baseline start (x, y); for
   /// Translate and Clip the offset or size (x, y); nothing more for Save and Restore.
   std::vector<double> numbers;
-  /// The path data of each Fill and Stroke, in order, each followed by '|'.
+  /// The path data of each Fill and Stroke, in order, each followed by '|'; "=" where it is the
+  /// last one's again (a contact point's dots, filled and then outlined), parsed once.
   std::string paths;
   /// The text of each Text mark, in order.
   std::vector<std::string> texts;

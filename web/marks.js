@@ -16,18 +16,20 @@ const fontOf = (size) => {
 /// or stroke is one Path2D made from its SVG path data (a Path2D built call by call, or a path
 /// per outline, costs several times as much for a pyramid's thousands of outlines).
 const pathText = new TextDecoder();
-// The paths of the last frame painted, by their path data: a contact point's dot is filled and
-// then outlined along the same path, and bodies at rest keep theirs from frame to frame.
+// The paths of the last frame painted, by their path data: bodies at rest keep theirs from frame
+// to frame. A path repeated at once (a contact point's dots, filled and then outlined) comes as
+// "=" and is the last one again.
 let parsed = new Map();
 function paintMarks(context, marks) {
   const n = marks.numbers, paths = pathText.decode(marks.paths).split("|");
   const kept = parsed;
   parsed = new Map();
+  let last = null;
   const pathOf = (data) => {
-    let path = parsed.get(data) || kept.get(data);
-    if (!path) path = new Path2D(data);
-    parsed.set(data, path);
-    return path;
+    if (data === "=") return last;
+    last = parsed.get(data) || kept.get(data) || new Path2D(data);
+    parsed.set(data, last);
+    return last;
   };
   let i = 0, path = 0, text = 0;
   context.lineJoin = "miter";
