@@ -20,6 +20,8 @@ const page = {
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
   plotted: 0,        // when the plots were last drawn (performance.now())
   painter: null,     // the worker painting the views (web/painter.js), where there is one
+  layerPainter: null,  // the worker painting their lower layers, where there is a second
+  frames: 0,         // frames handed to the painters so far, their number
   painting: 0,       // frames handed to the painter and not yet painted or dropped
 };
 window.sandboxPage = page;
@@ -71,7 +73,7 @@ function readAddress() {
     preset: words.get("preset") || "",
     compare: words.get("compare") || "",
     sets: words.getAll("set"),
-    painter: words.get("painter") || "",  // "page": paint on the page's thread (web-test --measure)
+    painter: words.get("painter") || "",  // "page" or "one" (startPainter; web-test --measure)
   };
 }
 
@@ -169,10 +171,17 @@ function draw() {
   if (page.error) return;
   activeRuns().forEach((run, k) => {
     if (page.painter) {
-      const marks = run.frame();
+      const marks = run.frame(), frame = ++page.frames;
+      const size = { view: k, frame, width: run.width(), height: run.height() };
+      const layers = page.layerPainter && splitMarks(marks);
+      const shown = layers ? layers.upper : marks;
       ++page.painting;
-      page.painter.postMessage({ view: k, width: run.width(), height: run.height(), marks },
-                               [marks.numbers.buffer, marks.paths.buffer]);
+      page.painter.postMessage({ ...size, marks: shown, layered: !!layers },
+                               [shown.numbers.buffer, shown.paths.buffer]);
+      if (layers) {
+        page.layerPainter.postMessage({ ...size, marks: layers.lower },
+                                      [layers.lower.numbers.buffer, layers.lower.paths.buffer]);
+      }
       return;
     }
     const canvas = k === 0 ? $("view") : $("view2");
@@ -199,8 +208,9 @@ function draw() {
   if (!page.painter) ++page.framesDrawn;
 }
 
-/// Hands the views' canvases to the painter, where the browser can and the address does not ask
-/// for painting on the page (painter=page, which scripts/web-test --measure compares).
+/// Hands the views' canvases to the painter (web/painter.js), and each frame's lower layer to a
+/// second painter, where the browser can. The address may ask for painting on the page
+/// (painter=page) or by one painter (painter=one), which scripts/web-test --measure compares.
 function startPainter(where) {
   const views = [$("view"), $("view2")];
   if (!window.OffscreenCanvas || !views[0].transferControlToOffscreen || where === "page") return;
@@ -217,6 +227,15 @@ function startPainter(where) {
     --page.painting;
     if (data.painted && data.view === 0) ++page.framesDrawn;
   };
+  if (where === "one") return;
+  try {
+    page.layerPainter = new Worker("painter.js");
+  } catch (error) {
+    return;  // one painter paints the whole frames
+  }
+  const channel = new MessageChannel();
+  page.painter.postMessage({ port: channel.port1 }, [channel.port1]);
+  page.layerPainter.postMessage({ port: channel.port2 }, [channel.port2]);
 }
 
 /// Leaves the views the window's height below their top, less their captions: the whole frame
