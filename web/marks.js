@@ -84,7 +84,8 @@ function splitMarks(marks) {
   while (i < n.length) {
     const kind = n[i];
     if (kind === FILL || kind === STROKE) {
-      if (bytes[at] === REPEAT && places.length && places[places.length - 1][1] === at) places.pop();
+      const before = places[places.length - 1];
+      if (bytes[at] === REPEAT && before && before[1] === at) places.pop();
       at = bytes.indexOf(BAR, at) + 1;
     } else if (kind === TEXT) {
       ++text;
@@ -110,7 +111,8 @@ function splitMarks(marks) {
   upperNumbers.set([TRANSLATE, dx, dy]);
   upperNumbers.set(n.subarray(number), 3);
   return {
-    lower: { numbers: lowerNumbers, paths: bytes.slice(0, byte), texts: marks.texts.slice(0, texts) },
+    lower: { numbers: lowerNumbers, paths: bytes.slice(0, byte),
+             texts: marks.texts.slice(0, texts) },
     upper: { numbers: upperNumbers, paths: bytes.slice(byte), texts: marks.texts.slice(texts) },
   };
 }

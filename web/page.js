@@ -20,9 +20,12 @@ const page = {
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
   plotted: 0,        // when the plots were last drawn (performance.now())
   painter: null,     // the worker painting the views (web/painter.js), where there is one
-  layerPainter: null,  // the worker painting their lower layers, where there is a second
+  upperPainter: null,  // the worker painting their frames' upper layers, where there is a second
   frames: 0,         // frames handed to the painters so far, their number
-  painting: 0,       // frames handed to the painter and not yet painted or dropped
+  painting: 0,       // layers handed to the painters and not yet painted or dropped
+  // The first view's frames painted by each painter, [frame, animation frame's time], for
+  // scripts/web-test --measure to count the pictures whose two layers come from two frames.
+  shown: { lower: [], upper: [] },
 };
 window.sandboxPage = page;
 
@@ -173,14 +176,18 @@ function draw() {
     if (page.painter) {
       const marks = run.frame(), frame = ++page.frames;
       const size = { view: k, frame, width: run.width(), height: run.height() };
-      const layers = page.layerPainter && splitMarks(marks);
-      const shown = layers ? layers.upper : marks;
+      const layers = page.upperPainter && splitMarks(marks);
+      const lower = layers ? layers.lower : marks;
       ++page.painting;
-      page.painter.postMessage({ ...size, marks: shown, layered: !!layers },
-                               [shown.numbers.buffer, shown.paths.buffer]);
-      if (layers) {
-        page.layerPainter.postMessage({ ...size, marks: layers.lower },
-                                      [layers.lower.numbers.buffer, layers.lower.paths.buffer]);
+      page.painter.postMessage({ ...size, marks: lower },
+                               [lower.numbers.buffer, lower.paths.buffer]);
+      if (page.upperPainter) {
+        // Without a place to split, the upper layer is nothing: cleared, it shows the lower.
+        const upper = layers ? layers.upper : { numbers: new Float64Array(0),
+                                                 paths: new Uint8Array(0), texts: [] };
+        ++page.painting;
+        page.upperPainter.postMessage({ ...size, marks: upper, clear: true },
+                                      [upper.numbers.buffer, upper.paths.buffer]);
       }
       return;
     }
@@ -208,34 +215,43 @@ function draw() {
   if (!page.painter) ++page.framesDrawn;
 }
 
-/// Hands the views' canvases to the painter (web/painter.js), and each frame's lower layer to a
-/// second painter, where the browser can. The address may ask for painting on the page
-/// (painter=page) or by one painter (painter=one), which scripts/web-test --measure compares.
+/// Hands the views' canvases to the painter (web/painter.js), where the browser can, and to a
+/// second painter a canvas stacked on each, for the upper layer of its frames (splitMarks). The
+/// address may ask for painting on the page (painter=page) or by one painter (painter=one), which
+/// scripts/web-test --measure compares.
 function startPainter(where) {
   const views = [$("view"), $("view2")];
   if (!window.OffscreenCanvas || !views[0].transferControlToOffscreen || where === "page") return;
+  const hand = (painter, canvases, log) => {
+    canvases.forEach((view, k) => {
+      const canvas = view.transferControlToOffscreen();
+      painter.postMessage({ view: k, canvas }, [canvas]);
+    });
+    painter.onmessage = ({ data }) => {
+      --page.painting;
+      if (data.painted && data.view === 0) log(data);
+    };
+  };
   try {
     page.painter = new Worker("painter.js");
+    if (where !== "one") page.upperPainter = new Worker("painter.js");
   } catch (error) {
-    return;  // the browser refused the worker: the page paints its views itself
+    if (!page.painter) return;  // the browser refused the worker: the page paints its views
   }
-  views.forEach((view, k) => {
-    const canvas = view.transferControlToOffscreen();
-    page.painter.postMessage({ view: k, canvas }, [canvas]);
+  // The last thousand or so frames painted are kept.
+  const keep = (list, data) => list.push([data.frame, data.at]) > 1200 && list.splice(0, 200);
+  hand(page.painter, views, (data) => {
+    ++page.framesDrawn;
+    keep(page.shown.lower, data);
   });
-  page.painter.onmessage = ({ data }) => {
-    --page.painting;
-    if (data.painted && data.view === 0) ++page.framesDrawn;
-  };
-  if (where === "one") return;
-  try {
-    page.layerPainter = new Worker("painter.js");
-  } catch (error) {
-    return;  // one painter paints the whole frames
-  }
-  const channel = new MessageChannel();
-  page.painter.postMessage({ port: channel.port1 }, [channel.port1]);
-  page.layerPainter.postMessage({ port: channel.port2 }, [channel.port2]);
+  if (!page.upperPainter) return;
+  const uppers = views.map((view) => {
+    const upper = document.createElement("canvas");
+    upper.className = "upper";
+    view.after(upper);
+    return upper;
+  });
+  hand(page.upperPainter, uppers, (data) => keep(page.shown.upper, data));
 }
 
 /// Leaves the views the window's height below their top, less their captions: the whole frame
