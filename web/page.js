@@ -76,7 +76,7 @@ function readAddress() {
     preset: words.get("preset") || "",
     compare: words.get("compare") || "",
     sets: words.getAll("set"),
-    painter: words.get("painter") || "",  // "page" or "one" (startPainter; web-test --measure)
+    painter: words.get("painter") || undefined,  // "page", "one" or "two" (startPainter)
   };
 }
 
@@ -215,11 +215,14 @@ function draw() {
   if (!page.painter) ++page.framesDrawn;
 }
 
-/// Hands the views' canvases to the painter (web/painter.js), where the browser can, and to a
-/// second painter a canvas stacked on each, for the upper layer of its frames (splitMarks). The
-/// address may ask for painting on the page (painter=page) or by one painter (painter=one), which
-/// scripts/web-test --measure compares.
-function startPainter(where) {
+/// Where the views are painted unless the address says (painter=page, one or two, which
+/// scripts/web-test --measure compares): two painters, each a layer of every frame.
+const PAINTERS = "two";
+
+/// Hands the views' canvases to the painter (web/painter.js), where the browser can, and with
+/// two painters, to the second a canvas stacked on each, for the upper layer of its frames
+/// (splitMarks).
+function startPainter(where = PAINTERS) {
   const views = [$("view"), $("view2")];
   if (!window.OffscreenCanvas || !views[0].transferControlToOffscreen || where === "page") return;
   const hand = (painter, canvases, log) => {
@@ -234,7 +237,7 @@ function startPainter(where) {
   };
   try {
     page.painter = new Worker("painter.js");
-    if (where !== "one") page.upperPainter = new Worker("painter.js");
+    if (where === "two") page.upperPainter = new Worker("painter.js");
   } catch (error) {
     if (!page.painter) return;  // the browser refused the worker: the page paints its views
   }
