@@ -216,8 +216,10 @@ function draw() {
 }
 
 /// Where the views are painted unless the address says (painter=page, one or two, which
-/// scripts/web-test --measure compares): two painters, each a layer of every frame.
-const PAINTERS = "two";
+/// scripts/web-test --measure compares): one painter. Two paint fewer frames a second of
+/// pyramid20 on the two busy cores measured, and show pictures whose layers come from two steps
+/// (docs/design/web-painting.md).
+const PAINTERS = "one";
 
 /// Hands the views' canvases to the painter (web/painter.js), where the browser can, and with
 /// two painters, to the second a canvas stacked on each, for the upper layer of its frames
