@@ -66,3 +66,53 @@ function paintMarks(context, marks) {
     }
   }
 }
+
+/// The numbers each mark kind carries after its kind (web/mark_encoding.h).
+const CARRIES = [5, 5, 7, 0, 2, 2, 0];
+const BAR = 124, REPEAT = 61;  // '|', which ends each path's data; '=', the last path again
+
+/// The marks in two layers, for two painters (web/painter.js), or null where the frame has no
+/// place to split. The lower layer ends where its share of the path data (what parsing and
+/// rasterizing cost) comes nearest half, at a mark outside any Save and not before a repeated
+/// path ("=", which needs the last one). The translations before the split are undone at the
+/// lower layer's end and made again at the upper's start, so each paints as the whole frame does.
+function splitMarks(marks) {
+  const n = marks.numbers, bytes = marks.paths;
+  // Where a split may come: [mark's number, path byte, text, x, y].
+  const places = [];
+  let i = 0, at = 0, text = 0, depth = 0, x = 0, y = 0;
+  while (i < n.length) {
+    const kind = n[i];
+    if (kind === FILL || kind === STROKE) {
+      const before = places[places.length - 1];
+      if (bytes[at] === REPEAT && before && before[1] === at) places.pop();
+      at = bytes.indexOf(BAR, at) + 1;
+    } else if (kind === TEXT) {
+      ++text;
+    } else if (kind === SAVE) {
+      ++depth;
+    } else if (kind === RESTORE) {
+      --depth;
+    } else if (kind === TRANSLATE && depth === 0) {
+      x += n[i + 1];
+      y += n[i + 2];
+    }
+    i += 1 + CARRIES[kind];
+    if (depth === 0 && i < n.length) places.push([i, at, text, x, y]);
+  }
+  if (!places.length) return null;
+  const nearest = (best, place) =>
+    Math.abs(2 * place[1] - bytes.length) < Math.abs(2 * best[1] - bytes.length) ? place : best;
+  const [number, byte, texts, dx, dy] = places.reduce(nearest);
+  const lowerNumbers = new Float64Array(number + 3);
+  lowerNumbers.set(n.subarray(0, number));
+  lowerNumbers.set([TRANSLATE, -dx, -dy], number);
+  const upperNumbers = new Float64Array(n.length - number + 3);
+  upperNumbers.set([TRANSLATE, dx, dy]);
+  upperNumbers.set(n.subarray(number), 3);
+  return {
+    lower: { numbers: lowerNumbers, paths: bytes.slice(0, byte),
+             texts: marks.texts.slice(0, texts) },
+    upper: { numbers: upperNumbers, paths: bytes.slice(byte), texts: marks.texts.slice(texts) },
+  };
+}
