@@ -20,12 +20,7 @@ const page = {
   framesDrawn: 0,    // frames painted so far (scripts/web-test --measure counts them)
   plotted: 0,        // when the plots were last drawn (performance.now())
   painter: null,     // the worker painting the views (web/painter.js), where there is one
-  upperPainter: null,  // the worker painting their frames' upper layers, where there is a second
-  frames: 0,         // frames handed to the painters so far, their number
-  painting: 0,       // layers handed to the painters and not yet painted or dropped
-  // The first view's frames painted by each painter, [frame, animation frame's time], for
-  // scripts/web-test --measure to count the pictures whose two layers come from two frames.
-  shown: { lower: [], upper: [] },
+  painting: 0,       // frames handed to the painter and not yet painted or dropped
 };
 window.sandboxPage = page;
 
@@ -76,7 +71,7 @@ function readAddress() {
     preset: words.get("preset") || "",
     compare: words.get("compare") || "",
     sets: words.getAll("set"),
-    painter: words.get("painter") || undefined,  // "page", "one" or "two" (startPainter)
+    painter: words.get("painter") || "",  // "page": paint on the page's thread (web-test --measure)
   };
 }
 
@@ -174,21 +169,10 @@ function draw() {
   if (page.error) return;
   activeRuns().forEach((run, k) => {
     if (page.painter) {
-      const marks = run.frame(), frame = ++page.frames;
-      const size = { view: k, frame, width: run.width(), height: run.height() };
-      const layers = page.upperPainter && splitMarks(marks);
-      const lower = layers ? layers.lower : marks;
+      const marks = run.frame();
       ++page.painting;
-      page.painter.postMessage({ ...size, marks: lower },
-                               [lower.numbers.buffer, lower.paths.buffer]);
-      if (page.upperPainter) {
-        // Without a place to split, the upper layer is nothing: cleared, it shows the lower.
-        const upper = layers ? layers.upper : { numbers: new Float64Array(0),
-                                                 paths: new Uint8Array(0), texts: [] };
-        ++page.painting;
-        page.upperPainter.postMessage({ ...size, marks: upper, clear: true },
-                                      [upper.numbers.buffer, upper.paths.buffer]);
-      }
+      page.painter.postMessage({ view: k, width: run.width(), height: run.height(), marks },
+                               [marks.numbers.buffer, marks.paths.buffer]);
       return;
     }
     const canvas = k === 0 ? $("view") : $("view2");
@@ -215,48 +199,24 @@ function draw() {
   if (!page.painter) ++page.framesDrawn;
 }
 
-/// Where the views are painted unless the address says (painter=page, one or two, which
-/// scripts/web-test --measure compares): one painter. Two paint fewer frames a second of
-/// pyramid20 on the two busy cores measured, and show pictures whose layers come from two steps
-/// (docs/design/web-painting.md).
-const PAINTERS = "one";
-
-/// Hands the views' canvases to the painter (web/painter.js), where the browser can, and with
-/// two painters, to the second a canvas stacked on each, for the upper layer of its frames
-/// (splitMarks).
-function startPainter(where = PAINTERS) {
+/// Hands the views' canvases to the painter, where the browser can and the address does not ask
+/// for painting on the page (painter=page, which scripts/web-test --measure compares).
+function startPainter(where) {
   const views = [$("view"), $("view2")];
   if (!window.OffscreenCanvas || !views[0].transferControlToOffscreen || where === "page") return;
-  const hand = (painter, canvases, log) => {
-    canvases.forEach((view, k) => {
-      const canvas = view.transferControlToOffscreen();
-      painter.postMessage({ view: k, canvas }, [canvas]);
-    });
-    painter.onmessage = ({ data }) => {
-      --page.painting;
-      if (data.painted && data.view === 0) log(data);
-    };
-  };
   try {
     page.painter = new Worker("painter.js");
-    if (where === "two") page.upperPainter = new Worker("painter.js");
   } catch (error) {
-    if (!page.painter) return;  // the browser refused the worker: the page paints its views
+    return;  // the browser refused the worker: the page paints its views itself
   }
-  // The last thousand or so frames painted are kept.
-  const keep = (list, data) => list.push([data.frame, data.at]) > 1200 && list.splice(0, 200);
-  hand(page.painter, views, (data) => {
-    ++page.framesDrawn;
-    keep(page.shown.lower, data);
+  views.forEach((view, k) => {
+    const canvas = view.transferControlToOffscreen();
+    page.painter.postMessage({ view: k, canvas }, [canvas]);
   });
-  if (!page.upperPainter) return;
-  const uppers = views.map((view) => {
-    const upper = document.createElement("canvas");
-    upper.className = "upper";
-    view.after(upper);
-    return upper;
-  });
-  hand(page.upperPainter, uppers, (data) => keep(page.shown.upper, data));
+  page.painter.onmessage = ({ data }) => {
+    --page.painting;
+    if (data.painted && data.view === 0) ++page.framesDrawn;
+  };
 }
 
 /// Leaves the views the window's height below their top, less their captions: the whole frame

@@ -2,11 +2,9 @@
 // canvas as an OffscreenCanvas), so that the page's thread steps the runs and makes their marks
 // while this one parses the paths and rasterizes them, most of a pyramid's frame. It paints the
 // newest frame of each view once per animation frame: each painted frame is one the screen shows,
-// and a frame overtaken by a newer one before its turn is dropped unpainted. Where the page has
-// two painters, each paints one layer of every frame on a canvas of its own, the upper layer's
-// stacked on the lower's and cleared before each frame. Messages: {view, canvas} once per view,
-// then {view, frame, width, height, marks, clear} per frame, each answered with {view, frame,
-// painted, at}: at, the animation frame's time (ms since the epoch) it was painted in.
+// and a frame overtaken by a newer one before its turn is dropped unpainted. Messages: {view,
+// canvas} once per view, then {view, width, height, marks} per frame, each answered with {view,
+// painted}.
 "use strict";
 importScripts("marks.js");
 
@@ -22,8 +20,7 @@ self.onmessage = ({ data }) => {
     canvases[data.view] = data.canvas;
     return;
   }
-  const old = newest[data.view];
-  if (old) self.postMessage({ view: old.view, frame: old.frame, painted: false });
+  if (newest[data.view]) self.postMessage({ view: data.view, painted: false });
   newest[data.view] = data;
   if (!scheduled) {
     scheduled = true;
@@ -31,7 +28,7 @@ self.onmessage = ({ data }) => {
   }
 };
 
-function paintNewest(now) {
+function paintNewest() {
   scheduled = false;
   newest.forEach((data, view) => {
     if (!data) return;
@@ -41,9 +38,7 @@ function paintNewest(now) {
       canvas.width = data.width;
       canvas.height = data.height;
     }
-    const context = canvas.getContext("2d");
-    if (data.clear) context.clearRect(0, 0, canvas.width, canvas.height);
-    paintMarks(context, data.marks);
-    self.postMessage({ view, frame: data.frame, painted: true, at: performance.timeOrigin + now });
+    paintMarks(canvas.getContext("2d"), data.marks);
+    self.postMessage({ view, painted: true });
   });
 }
