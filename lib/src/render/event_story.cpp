@@ -137,14 +137,13 @@ EventStory tellEvent(const SolverEvent& event, const std::vector<Body>& before,
   const Manifold& manifold = manifolds[std::size_t(event.manifold)];
   const ContactPoint& point = manifold.points[event.point];
   if (event.phase == SolverEvent::Phase::Push) {
-    story.lines.push_back(story.label +
-                          ", on along the last sweeps' direction (conjugate gradient)");
+    // Short lines: a tall scene's frame is narrow.
+    story.lines.push_back(story.label + ", conjugate gradient");
     story.lines.push_back(format("closing speed %.3f → %.3f m/s",
                                  closingSpeed(before, manifold, point.point),
                                  closingSpeed(after, manifold, point.point)));
-    story.lines.push_back(
-        format("pushed λ_n by %.4f N s, λ_t by %.4f N s; the next sweep clamps the totals",
-               event.normalImpulse, event.tangentImpulse));
+    story.lines.push_back(format("pushed on: λ_n %+.4f N s, λ_t %+.4f N s", event.normalImpulse,
+                                 event.tangentImpulse));
     return story;
   }
   story.lines.push_back(story.label + whyThisPoint(event, before, manifolds, solver, partner));
