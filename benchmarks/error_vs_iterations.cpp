@@ -128,9 +128,9 @@ std::vector<double> probeTimes(const Scene& scene) {
 
 /// Writes one row per variant and k for the scene's step at `time`; the state is caught running
 /// sequential impulses at their defaults but in plain sweeps, without the conjugate gradient's push
-/// (warm impulses on the manifolds): from the settled pyramid20 the push leaves, the reference's
-/// active set reaches its factorization limit or cycles at every step from 1 s to 1.75 s. Throws,
-/// having written nothing, when the reference cannot solve that step.
+/// (warm impulses on the manifolds): on the settled pyramid20 the push leaves, the reference's
+/// active set does not find its answer (docs/design/sequential-impulses-speed.md). Throws, having
+/// written nothing, when the reference cannot solve that step.
 void probeScene(const Scene& scene, double time, std::ofstream& data) {
   const long probe = static_cast<long>(time / scene.world.dt + 0.5);
   SequentialImpulseSettings plain = scene.solverSettings.sequential;

@@ -2,7 +2,9 @@
 // Arbiter::ApplyImpulse): every contact point is solved on its own, one after the other, and the
 // sweep over all of them is repeated. Each point asks "how big an impulse stops the closing?",
 // answered with the impulse per unit of velocity change; friction is the same question along the
-// tangent, capped at μ times the normal impulse.
+// tangent, capped at μ times the normal impulse. Between sweeps the totals are pushed on along
+// the direction the sweeps keep moving them (the conjugate gradient, pushOn), unless the settings
+// turn it off.
 //
 // For speed the sweeps touch only what they need, laid out contiguously: a solver body
 // per body (velocity, angular velocity, inverse mass and inertia) and a constraint per contact
