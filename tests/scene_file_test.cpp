@@ -220,7 +220,7 @@ TEST_CASE("a choice takes one of its names; another value is refused, listing th
       "s.toml");
   CHECK(scene.world.sleep == Sleep::Box2d);
   CHECK(scene.solverSettings.softStep.relaxation == Relaxation::FrictionInBoth);
-  CHECK(scene.solverSettings.softStep.recycling == RecyclingRule::Box2dV3);
+  CHECK(scene.solverSettings.softStep.recycling.rule == RecyclingRule::Box2dV3);
   CHECK(errorOf("[world]\nsolver = \"micro\"\n[solver]\nimpulses = \"pairs\"\n" +
                 std::string(kOneBall)) ==
         "bad.toml:4:12: unknown value 'pairs' for 'impulses' (known: separate, point_totals, "

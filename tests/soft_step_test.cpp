@@ -280,7 +280,7 @@ TEST_CASE(
   CHECK(topTravel() < kStands);
   scene.solverSettings.softStep.relaxation = Relaxation::FrictionInBoth;
   CHECK(topTravel() < kStands);
-  scene.solverSettings.softStep.recycling = RecyclingRule::Off;
+  scene.solverSettings.softStep.recycling.rule = RecyclingRule::Off;
   CHECK(topTravel() > kLeansOver);
   scene.solverSettings.softStep.relaxation = Relaxation::FrictionInRelax;
   CHECK(topTravel() < kStands);
@@ -294,7 +294,7 @@ TEST_CASE(
   // farther-reaching body's extent (0.707 m for a unit box).
   for (const bool withinFoundDistance : {false, true}) {
     Scene scene = stackScene("soft_step", 1, 0.6);
-    scene.solverSettings.softStep.recycling =
+    scene.solverSettings.softStep.recycling.rule =
         withinFoundDistance ? RecyclingRule::Refined : RecyclingRule::Box2dV3;
     const double turn = 0.002;  // rad: 1 mm lift + 1.4 mm at the extent, under the 5 mm margin
     scene.bodies[1].angle = turn;
@@ -340,7 +340,7 @@ TEST_CASE(
   // recycled on v3's rule.
   for (const bool withinFoundDistance : {false, true}) {
     Scene scene = groundScene("soft_step", 0.6);
-    scene.solverSettings.softStep.recycling =
+    scene.solverSettings.softStep.recycling.rule =
         withinFoundDistance ? RecyclingRule::Refined : RecyclingRule::Box2dV3;
     BodyDef disc = lecture::diskOnSlope(0.5, 0.0, 0.6);
     scene.bodies.push_back(disc);
@@ -359,7 +359,7 @@ TEST_CASE(
   for (const bool renewRoundNormals : {true, false}) {
     for (const double along : {0.0, 0.5}) {  // above the face's middle, above its right corner
       Scene scene = groundScene("soft_step", 0.6);
-      scene.solverSettings.softStep.recycling =
+      scene.solverSettings.softStep.recycling.rule =
           renewRoundNormals ? RecyclingRule::Refined : RecyclingRule::Box2dV3;
       scene.bodies[0].shape = makeBox(1.0, 1.0);
       scene.bodies[0].position = Vec2(0.0, -0.5);
@@ -444,7 +444,7 @@ TEST_CASE("a rolling pentagon's next vertex is found before it reaches the groun
     for (const bool withinFoundDistance : {true, false}) {
       Scene scene = groundScene("soft_step", 1.0);
       scene.world.dt = dt;
-      scene.solverSettings.softStep.recycling =
+      scene.solverSettings.softStep.recycling.rule =
           withinFoundDistance ? RecyclingRule::Refined : RecyclingRule::Box2dV3;
       BodyDef pentagon = lecture::polygonOnSlope(5, radius, 0.0, 1.0);
       // Turning clockwise about its front corner at 1.1 times the spin that just carries its
@@ -493,9 +493,9 @@ TEST_CASE("a 40-box stack stands 10 s with contact recycling, and buckles withou
   // 10 s, Box2D v3 3.4 cm). Falls: the top ends up more than a box width off the axis.
   constexpr double kStands = 0.2;  // m
   constexpr double kFalls = 1.0;   // m
-  scene.solverSettings.softStep.recycling = RecyclingRule::Off;
+  scene.solverSettings.softStep.recycling.rule = RecyclingRule::Off;
   const double foundAnew = farthestTop();
-  scene.solverSettings.softStep.recycling = RecyclingRule::Refined;
+  scene.solverSettings.softStep.recycling.rule = RecyclingRule::Refined;
   const double recycled = farthestTop();
   WARN("figure: 40-box stack, top's farthest from the axis in 10 s: recycled "
        << recycled << " m, found anew " << foundAnew << " m");

@@ -182,6 +182,19 @@ void addFields(std::vector<SettingField>& fields, PositionPassSettings& s) {
                   "the position pass corrects a two-point contact's corners together"}});
 }
 
+void addFields(std::vector<SettingField>& fields, RecyclingSettings& s) {
+  fields.insert(
+      fields.end(),
+      {{"recycling", choice(s.rule, {"off", "box2d_v3", "refined"}), "", kNone,
+        "a manifold is kept as found while the bodies move little (`box2d_v3`); `refined` "
+        "(ours): also found anew past the distance a one-point manifold was found within, "
+        "measured in the world's frame, and every step when its normal runs to a circle"},
+       {"recycle_distance", &s.distance, "m", closed(0.0, 1.0),
+        "a manifold is found anew once B has moved this far relative to A"},
+       {"recycle_largest_turn", &s.largestTurn, "rad", closed(0.0, kPi),
+        "...or once either body has turned this far"}});
+}
+
 /// m/s. A speed no contact reaches, the top of the settings' range: a cap or threshold that never
 /// acts.
 constexpr double kNoLimit = 1000.0;
@@ -199,6 +212,7 @@ SequentialImpulseSettings SequentialImpulseSettings::box2dLite() {
   settings.positionPass.iterations = 0;
   settings.block.enabled = false;
   settings.positionPass.blockSolve = false;
+  settings.recycling.rule = RecyclingRule::Off;
   return settings;
 }
 
@@ -210,6 +224,7 @@ SequentialImpulseSettings SequentialImpulseSettings::box2d24() {
   settings.frictionFirst = true;
   settings.targets.penetrationBias = false;
   settings.positionPass.blockSolve = false;
+  settings.recycling.rule = RecyclingRule::Off;
   return settings;
 }
 
@@ -235,6 +250,7 @@ std::vector<SettingField> describe(SequentialImpulseSettings& s) {
                  {"conjugate_gradient", &s.conjugateGradient, "", kNone,
                   "after each sweep, push the impulses on along the sweeps' direction "
                   "(nonsmooth conjugate gradient)"}});
+  addFields(fields, s.recycling);
   return fields;
 }
 
@@ -293,7 +309,7 @@ SoftStepSettings SoftStepSettings::box2dV3() {
   SoftStepSettings settings;
   settings.roundSurfaces = false;
   settings.speculativeAtTouch = false;
-  settings.recycling = RecyclingRule::Box2dV3;
+  settings.recycling.rule = RecyclingRule::Box2dV3;
   settings.restitutionBlock.enabled = false;
   settings.frictionInRestitution = false;
   settings.restitutionOnStepTotals = false;
@@ -301,50 +317,45 @@ SoftStepSettings SoftStepSettings::box2dV3() {
 }
 
 std::vector<SettingField> describe(SoftStepSettings& s) {
-  return {{"substeps", &s.substeps, "", closed(1, 1000, kWork), "substeps per world step (v3: 4)"},
-          {"contact_hertz", &s.contactHertz, "Hz", aboveZero(1e4),
-           "a contact's stiffness as the frequency it rings at (v3: 30)"},
-          {"max_hertz_per_substep_rate", &s.maxHertzPerSubstepRate, "", aboveZero(1.0),
-           "the stiffness never exceeds this share of the substep rate (v3: 0.25)"},
-          {"damping_ratio", &s.dampingRatio, "", closed(0.0, 1e4),
-           "the contact spring's damping ratio (v3: 10)"},
-          {"static_hertz_factor", &s.staticHertzFactor, "", aboveZero(100.0),
-           "contacts with a static body are this many times stiffer (v3: 2)"},
-          {"max_push_velocity", &s.maxPushVelocity, "m/s", closed(0.0, 1000.0),
-           "the fastest the bias pushes overlapping bodies apart (v3: 3)"},
-          {"soft_contacts", &s.softContacts, "", kNone,
-           "soft constraints from hertz and damping; off: the rigid limit"},
-          {"relaxation", choice(s.relaxation, {"off", "friction_in_both", "friction_in_relax"}), "",
-           kNone,
-           "a solve without bias after the positions moved (v3's relax), friction in both solves "
-           "(v3.0) or in the relax solve only (v3 since 2025)"},
-          {"warm_starting", &s.warmStarting, "", kNone,
-           "each step and substep starts from the last impulses"},
-          {"speculative_contacts", &s.speculativeContacts, "", kNone,
-           "speculative contacts whatever the world says, as v3 always has them"},
-          {"recycling", choice(s.recycling, {"off", "box2d_v3", "refined"}), "", kNone,
-           "a manifold is kept as found while the bodies move little (`box2d_v3`); `refined` "
-           "(ours): also found anew past the distance a one-point manifold was found within, "
-           "measured in the world's frame, and every step when its normal runs to a circle"},
-          {"round_surfaces", &s.roundSurfaces, "", kNone,
-           "a circle's contact follows its centre and acts where it will touch (ours)"},
-          {"speculative_at_touch", &s.speculativeAtTouch, "", kNone,
-           "a speculative round contact takes its normal from where the two will touch (ours)"},
-          {"recycle_distance", &s.recycleDistance, "m", closed(0.0, 1.0),
-           "a manifold is found anew once B has moved this far relative to A"},
-          {"recycle_largest_turn", &s.recycleLargestTurn, "rad", closed(0.0, kPi),
-           "...or once either body has turned this far"},
-          {"friction_in_restitution", &s.frictionInRestitution, "", kNone,
-           "one friction solve after a bounce (ours)"},
-          {"restitution_on_step_totals", &s.restitutionOnStepTotals, "", kNone,
-           "a bounce may take back what any substep pushed at its point (ours)"},
-          {"restitution", &s.restitution, "", kNone, "a restitution pass after the substeps (v3)"},
-          {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
-           "below this closing speed a contact does not bounce (v3: 1)"},
-          {"block_restitution", &s.restitutionBlock.enabled, "", kNone,
-           "a two-point manifold whose points both bounce gets one 2×2 block of impulses (ours)"},
-          {"block_condition_limit", &s.restitutionBlock.conditionLimit, "", closed(1.0, 1e12),
-           "...only while k₀₀² < this × det K"}};
+  std::vector<SettingField> fields = {
+      {"substeps", &s.substeps, "", closed(1, 1000, kWork), "substeps per world step (v3: 4)"},
+      {"contact_hertz", &s.contactHertz, "Hz", aboveZero(1e4),
+       "a contact's stiffness as the frequency it rings at (v3: 30)"},
+      {"max_hertz_per_substep_rate", &s.maxHertzPerSubstepRate, "", aboveZero(1.0),
+       "the stiffness never exceeds this share of the substep rate (v3: 0.25)"},
+      {"damping_ratio", &s.dampingRatio, "", closed(0.0, 1e4),
+       "the contact spring's damping ratio (v3: 10)"},
+      {"static_hertz_factor", &s.staticHertzFactor, "", aboveZero(100.0),
+       "contacts with a static body are this many times stiffer (v3: 2)"},
+      {"max_push_velocity", &s.maxPushVelocity, "m/s", closed(0.0, 1000.0),
+       "the fastest the bias pushes overlapping bodies apart (v3: 3)"},
+      {"soft_contacts", &s.softContacts, "", kNone,
+       "soft constraints from hertz and damping; off: the rigid limit"},
+      {"relaxation", choice(s.relaxation, {"off", "friction_in_both", "friction_in_relax"}), "",
+       kNone,
+       "a solve without bias after the positions moved (v3's relax), friction in both solves "
+       "(v3.0) or in the relax solve only (v3 since 2025)"},
+      {"warm_starting", &s.warmStarting, "", kNone,
+       "each step and substep starts from the last impulses"},
+      {"speculative_contacts", &s.speculativeContacts, "", kNone,
+       "speculative contacts whatever the world says, as v3 always has them"},
+      {"round_surfaces", &s.roundSurfaces, "", kNone,
+       "a circle's contact follows its centre and acts where it will touch (ours)"},
+      {"speculative_at_touch", &s.speculativeAtTouch, "", kNone,
+       "a speculative round contact takes its normal from where the two will touch (ours)"},
+      {"friction_in_restitution", &s.frictionInRestitution, "", kNone,
+       "one friction solve after a bounce (ours)"},
+      {"restitution_on_step_totals", &s.restitutionOnStepTotals, "", kNone,
+       "a bounce may take back what any substep pushed at its point (ours)"},
+      {"restitution", &s.restitution, "", kNone, "a restitution pass after the substeps (v3)"},
+      {"restitution_threshold", &s.restitutionThreshold, "m/s", closed(0.0, 1000.0),
+       "below this closing speed a contact does not bounce (v3: 1)"},
+      {"block_restitution", &s.restitutionBlock.enabled, "", kNone,
+       "a two-point manifold whose points both bounce gets one 2×2 block of impulses (ours)"},
+      {"block_condition_limit", &s.restitutionBlock.conditionLimit, "", closed(1.0, 1e12),
+       "...only while k₀₀² < this × det K"}};
+  addFields(fields, s.recycling);
+  return fields;
 }
 
 }  // namespace impulse2d

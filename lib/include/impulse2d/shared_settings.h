@@ -1,5 +1,6 @@
 // The settings every method shares: the world's (time step, gravity, contacts, sleeping) and the
-// contact rules two or more methods use (targets, the position pass, the two-point block solve).
+// contact rules two or more methods use (targets, the position pass, the two-point block solve,
+// contact recycling).
 // Each method's own settings live beside it (solvers/*_settings.h); settings.h gathers them all.
 #pragma once
 
@@ -113,6 +114,34 @@ struct BlockSolveSettings {
   bool enabled = true;
   /// A two-point contact is solved as a block only while k₀₀² < this × det K (Box2D's 1000).
   double conditionLimit = 1000.0;
+};
+
+/// Contact recycling: a manifold is kept, normal and arms as found, while the bodies move little
+/// (Box2D v3's default), so a leaning box's Jacobians do not turn, a 40-box stack stands under
+/// soft step, and a resting pile's contacts are not clipped again every step.
+enum class RecyclingRule {
+  /// Every manifold is found anew every step.
+  Off,
+  /// v3's rule: found anew once the bodies moved past its distance or largest turn.
+  Box2dV3,
+  /// Ours beyond v3, each for a failure of its rule: a one-point manifold is also found anew
+  /// once the bodies moved as far as the contact distance it was found within, so a pivoting
+  /// polygon's next vertex is not missed; the distance is measured in the world's frame, where
+  /// the kept normal and arms live, so a pair turning together counts as moving; and a manifold
+  /// whose normal runs to a circle's centre is found anew every step, since that normal turns as
+  /// the bodies move past each other.
+  Refined,
+};
+
+/// When a method keeps a pair's manifold from one step to the next (contact_recycling.h).
+struct RecyclingSettings {
+  /// Whether a manifold is kept as found while the bodies move little, and by which rules.
+  RecyclingRule rule = RecyclingRule::Refined;
+  /// m. A manifold is found anew once B has moved this far relative to A, counting the turn at
+  /// the farther-reaching body's extent (v3: 10 × its 0.005 m slop).
+  double distance = 0.05;
+  /// rad. ...or once either body has turned this far (v3: cosine above 0.98).
+  double largestTurn = 0.2;
 };
 
 }  // namespace impulse2d

@@ -132,10 +132,12 @@ class StepStages {
 /// The step of the rigid methods (micro-collisions, sequential impulses, the reference), in
 /// Box2D-Lite's order: the forces into the velocities, the method's impulses on the new
 /// velocities, the positions moved by them, then the method's pass on what penetration remains.
-/// Method has solveVelocities and solvePositions, each taking the StepContext.
+/// Method has solveVelocities and solvePositions, each taking the StepContext; `finding` is how it
+/// wants its contacts found (sequential impulses keep those that moved little).
 template <typename Method>
-void stepVelocitiesThenPositions(StepStages& stages, Method& method) {
-  const StepContext context = stages.findContacts({});
+void stepVelocitiesThenPositions(StepStages& stages, Method& method,
+                                 const ContactFinding& finding = {}) {
+  const StepContext context = stages.findContacts(finding);
   stages.integrateVelocities();
   stages.stopAtNonFiniteBody();
   method.solveVelocities(context);

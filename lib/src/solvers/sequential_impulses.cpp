@@ -13,9 +13,11 @@
 namespace impulse2d {
 
 // Box2D-Lite's and 2.4's step: the sweeps on the velocities the forces gave, then the position
-// pass once the bodies have moved.
+// pass once the bodies have moved. The contacts of pairs that moved little are kept as found
+// (settings' recycling).
 void SequentialImpulseSolver::step(StepStages& stages) {
-  stepVelocitiesThenPositions(stages, *this);
+  const bool recycles = settings_.recycling.rule != RecyclingRule::Off;
+  stepVelocitiesThenPositions(stages, *this, {false, recycles ? &recycling_ : nullptr});
 }
 
 void SequentialImpulseSolver::solveVelocities(const StepContext& context) {

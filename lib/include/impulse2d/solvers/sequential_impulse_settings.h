@@ -48,13 +48,20 @@ struct SequentialImpulseSettings {
   /// n contacts tall; the push carries it on (docs/sequential-impulses.md). Needs accumulated
   /// impulses: the next sweep clamps what the push carried past zero or the friction cone.
   bool conjugateGradient = true;
+  /// A resting contact's manifold is kept as found while its bodies move little, its overlap
+  /// following how far they moved, instead of being clipped anew every step (Box2D v3's contact
+  /// recycling, contact_recycling.h). A settled pile then pays the narrow phase only for the pairs
+  /// that moved (docs/sequential-impulses.md).
+  RecyclingSettings recycling = {RecyclingRule::Refined, 0.005, 0.01};
 
   /// Catto's Box2D-Lite: 10 sweeps to the end, normal then friction, Baumgarte bias 0.2 beyond a
-  /// slop of 0.01 m with no cap, no bounce, no block solve, no position pass.
+  /// slop of 0.01 m with no cap, no bounce, no block solve, no position pass, every contact found
+  /// anew every step.
   static SequentialImpulseSettings box2dLite();
   /// Box2D 2.4.1's b2ContactSolver: 8 sweeps to the end, friction first, the block solver, bounce
   /// above 1 m/s and no penetration bias in the velocities; then 3 sweeps of its position solver
-  /// one point at a time (0.2 of the penetration beyond 0.005 m, at most 0.2 m).
+  /// one point at a time (0.2 of the penetration beyond 0.005 m, at most 0.2 m); every contact
+  /// found anew every step.
   static SequentialImpulseSettings box2d24();
 };
 

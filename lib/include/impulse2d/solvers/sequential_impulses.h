@@ -18,6 +18,7 @@
 
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/contact_recycling.h"
 #include "impulse2d/solvers/sequential_impulse_settings.h"
 
 namespace impulse2d {
@@ -27,7 +28,7 @@ class SequentialImpulseSolver : public ContactSolver {
  public:
   /// A solver with these settings.
   explicit SequentialImpulseSolver(const SequentialImpulseSettings& settings)
-      : settings_(settings) {}
+      : settings_(settings), recycling_(settings.recycling, true) {}
 
   std::string name() const override { return "sequential"; }
   /// Finds the contacts, integrates the velocities, sweeps them, moves the bodies, runs the
@@ -161,6 +162,7 @@ class SequentialImpulseSolver : public ContactSolver {
                     const std::array<PointImpulse, 2>& impulses, SolverEvent::Phase phase) const;
 
   SequentialImpulseSettings settings_;
+  ContactRecycling recycling_;  ///< which manifolds are kept across steps (settings' recycling)
   std::vector<SolverBody> solverBodies_;
   std::vector<PointState> states_;
   std::vector<ManifoldState> manifoldStates_;

@@ -12,8 +12,8 @@
 
 #include "impulse2d/solver.h"
 #include "impulse2d/solvers/contact_math.h"
+#include "impulse2d/solvers/contact_recycling.h"
 #include "impulse2d/solvers/point_memory.h"
-#include "impulse2d/solvers/soft_step_recycling.h"
 #include "impulse2d/solvers/soft_step_settings.h"
 
 namespace impulse2d {
@@ -39,7 +39,7 @@ class SoftStepSolver : public ContactSolver {
  public:
   /// A solver with these settings.
   explicit SoftStepSolver(const SoftStepSettings& settings)
-      : settings_(settings), recycling_(settings) {}
+      : settings_(settings), recycling_(settings.recycling, settings.roundSurfaces) {}
 
   std::string name() const override { return "soft_step"; }
   /// Finds the contacts (ahead, recycling what moved little), then the substeps move the bodies:

@@ -17,22 +17,6 @@ enum class Relaxation {
   FrictionInRelax,
 };
 
-/// Contact recycling: a manifold is kept, normal and arms as found, while the bodies move little
-/// (v3's default), so a leaning box's Jacobians do not turn and a 40-box stack stands.
-enum class RecyclingRule {
-  /// Every manifold is found anew every step.
-  Off,
-  /// v3's rule: found anew once the bodies moved past recycleDistance or recycleLargestTurn.
-  Box2dV3,
-  /// Ours beyond v3, each for a failure of its rule: a one-point manifold is also found anew
-  /// once the bodies moved as far as the contact distance it was found within, so a pivoting
-  /// polygon's next vertex is not missed; the distance is measured in the world's frame, where
-  /// the kept normal and arms live, so a pair turning together counts as moving; and a manifold
-  /// whose normal runs to a circle's centre is found anew every step, since that normal turns as
-  /// the bodies move past each other.
-  Refined,
-};
-
 /// Soft step (Box2D v3, Catto's Solver2D solve_soft_step; docs/soft-step.md): substeps of soft
 /// contact constraints, each a spring-damper of a set stiffness and damping, then relaxation and
 /// a restitution pass. Measurements behind each default are in docs/soft-step.md.
@@ -66,12 +50,7 @@ struct SoftStepSettings {
   /// stopped at the surface instead of found overlapping (or tunnelling).
   bool speculativeContacts = true;
   /// Whether a manifold is kept as found while the bodies move little, and by which rules.
-  RecyclingRule recycling = RecyclingRule::Refined;
-  /// m. A manifold is found anew once B has moved this far relative to A, counting the turn at
-  /// the farther-reaching body's extent (v3: 10 × its 0.005 m slop).
-  double recycleDistance = 0.05;
-  /// rad. ...or once either body has turned this far (v3: cosine above 0.98).
-  double recycleLargestTurn = 0.2;
+  RecyclingSettings recycling;
   /// A restitution pass after the substeps: a closing contact leaves at −e times its closing
   /// speed before the step (v3's b2ApplyRestitution); false: soft contacts do not bounce.
   bool restitution = true;

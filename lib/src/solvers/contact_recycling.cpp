@@ -1,5 +1,5 @@
-// Soft step's contact recycling: which manifolds are kept, and how each was found.
-#include "impulse2d/solvers/soft_step_recycling.h"
+// Contact recycling: which manifolds are kept, and how each was found.
+#include "impulse2d/solvers/contact_recycling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,7 +66,7 @@ bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& b
   const Mat2 turnB = turnSinceFound(b, found->pose.rotationB);
   if (!movedLittle(*found, previous, a, b, turnB * turnA.transpose())) return false;
   kept = previous;
-  const bool roundSurfaces = settings_.roundSurfaces;
+  const bool roundSurfaces = roundSurfaces_;
   const auto armTurn = [roundSurfaces](const Body& body, const Mat2& turn) {
     return !roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : Mat2::Identity();
   };
@@ -86,7 +86,7 @@ bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& b
 }
 
 bool ContactRecycling::mayKeep(const Manifold& manifold, const std::vector<Body>& bodies) const {
-  if (settings_.recycling == RecyclingRule::Off || settings_.recycleDistance <= 0.0 ||
+  if (settings_.rule == RecyclingRule::Off || settings_.distance <= 0.0 ||
       manifold.pointCount == 0) {
     return false;
   }
@@ -101,7 +101,7 @@ bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& p
                                    const Body& a, const Body& b, const Mat2& relativeTurn) const {
   const double turnA = a.angle - found.pose.angleA;
   const double turnB = b.angle - found.pose.angleB;
-  const double largestTurn = settings_.recycleLargestTurn;
+  const double largestTurn = settings_.largestTurn;
   if (std::abs(turnA) > largestTurn || std::abs(turnB) > largestTurn) return false;
   const double sineOfRelativeTurn = relativeTurn(1, 0);
   const double moved =
@@ -120,9 +120,9 @@ bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& p
 double ContactRecycling::recycleDistance(const FoundManifold& found,
                                          const Manifold& previous) const {
   if (!refined() || previous.pointCount == 2) {
-    return settings_.recycleDistance;
+    return settings_.distance;
   }
-  return std::min(settings_.recycleDistance, found.pose.distance);
+  return std::min(settings_.distance, found.pose.distance);
 }
 
 // m. How far B's centre has moved relative to A's since the manifold was found: in A's frame (v3),

@@ -1,4 +1,4 @@
-// Soft step's contact recycling (Box2D v3): a pair's manifold is kept from one step to the next,
+// Contact recycling (Box2D v3): a pair's manifold is kept from one step to the next,
 // its normal, ids, impulses and arms as found, while its bodies move little; only each point's
 // overlap follows how far they moved. What that needs of a manifold, where its bodies and points
 // were when it was found, is kept here, beside the world's manifolds, not in them.
@@ -8,8 +8,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "impulse2d/shared_settings.h"
 #include "impulse2d/solver.h"
-#include "impulse2d/solvers/soft_step_settings.h"
 
 namespace impulse2d {
 
@@ -40,12 +40,16 @@ struct FoundManifold {
   std::array<FoundPoint, 2> points;  ///< in the manifold's order
 };
 
-/// Decides which manifolds soft step keeps, and remembers how each of the world's manifolds was
-/// found. The world asks it pair by pair, in the order of its manifolds (by bodyA, then bodyB).
+/// Decides which manifolds a method keeps (soft step, sequential impulses), and remembers how each
+/// of the world's manifolds was found. The world asks it pair by pair, in the order of its
+/// manifolds (by bodyA, then bodyB).
 class ContactRecycling : public ManifoldKeeping {
  public:
-  /// Recycling as `settings` ask (its recycling rule and distances).
-  explicit ContactRecycling(const SoftStepSettings& settings) : settings_(settings) {}
+  /// Recycling as `settings` ask. With `roundSurfaces` (soft step's) a circle's arm stays as found
+  /// while the circle turns, its contact following its centre; otherwise every arm turns with its
+  /// body.
+  ContactRecycling(const RecyclingSettings& settings, bool roundSurfaces)
+      : settings_(settings), roundSurfaces_(roundSurfaces) {}
 
   void startFinding() override;
   /// Keeps `previous` while its bodies have moved little since it was found (docs/soft-step.md).
@@ -63,7 +67,7 @@ class ContactRecycling : public ManifoldKeeping {
 
  private:
   /// Whether our rules beyond v3's apply (RecyclingRule::Refined).
-  bool refined() const { return settings_.recycling == RecyclingRule::Refined; }
+  bool refined() const { return settings_.rule == RecyclingRule::Refined; }
   /// The record of `previous`, found in the last substep's records; the records passed on the way
   /// that the world keeps (their bodies all sleep) are carried over as they are.
   const FoundManifold* recordOf(const Manifold& previous, const std::vector<Body>& bodies);
@@ -72,7 +76,8 @@ class ContactRecycling : public ManifoldKeeping {
   double recycleDistance(const FoundManifold& found, const Manifold& previous) const;
   double offsetMoved(const Body& a, const Body& b, const FoundPose& found) const;
 
-  SoftStepSettings settings_;
+  RecyclingSettings settings_;
+  bool roundSurfaces_;
   std::vector<FoundManifold> previous_;  ///< the last substep's records, by (bodyA, bodyB)
   std::size_t next_ = 0;                 ///< the first of previous_ not yet passed
   std::vector<FoundManifold> records_;   ///< this substep's, by (bodyA, bodyB)
