@@ -310,7 +310,10 @@ void printSpeedRow(const std::string& sceneName,
   for (size_t i = 1; i < kSpeedMethods.size(); ++i) {
     const double ratio = medianOver(
         [i](const auto& f) { return f[i].medianMicroseconds / f[0].medianMicroseconds; });
-    std::printf(" %s |", ratioCell(ratio, targets[i - 1]).c_str());
+    const double meanRatio =
+        medianOver([i](const auto& f) { return f[i].meanMicroseconds / f[0].meanMicroseconds; });
+    std::printf(" %s, mean %s |", ratioCell(ratio, targets[i - 1]).c_str(),
+                cell(meanRatio, "%.2f×").c_str());
   }
   const std::vector<RunFigures>& first = rounds[0];
   std::printf(" %s |", cell(first[0].drift, "%.2e").c_str());
@@ -321,11 +324,13 @@ void printSpeedRow(const std::string& sceneName,
 }
 
 /// Every method at its defaults (and sequential impulses at Box2D's 8+3) against Box2D 2.4.1.
-/// Box2D's time is b2World::Step alone. Instructions per step come from the --callgrind mode.
+/// Box2D's time is b2World::Step alone. Each cell is the ratio of median steps, judged against
+/// the target, and the ratio of mean steps (a whole run's time per step). Instructions per step
+/// come from the --callgrind mode.
 void printSpeedTable(const std::vector<std::string>& sceneNames) {
   std::printf(
       "\n### Against Box2D 2.4.1: time per step / Box2D's b2World::Step (median over %d rounds "
-      "of whole runs in turn)\n\n",
+      "of whole runs in turn): median step against the target, mean step beside it\n\n",
       kSpeedRounds);
   std::printf(
       "| scene | Box2D Step µs | Box2D through the adapter µs | sequential 8+3 | sequential "

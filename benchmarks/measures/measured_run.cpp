@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 
 #include "impulse2d/box2d/box2d_simulation.h"
@@ -139,6 +140,11 @@ RunFigures MeasuredRun::figures() const {
   figures.stepsRun = simulation_->stepCount();
   figures.completed = figures.stepsRun >= plan_.steps;
   figures.medianMicroseconds = stepMicroseconds_.empty() ? notMeasured : median(stepMicroseconds_);
+  figures.meanMicroseconds =
+      stepMicroseconds_.empty()
+          ? notMeasured
+          : std::accumulate(stepMicroseconds_.begin(), stepMicroseconds_.end(), 0.0) /
+                double(stepMicroseconds_.size());
   figures.medianWholeStepMicroseconds =
       wholeStepMicroseconds_.empty() ? notMeasured : median(wholeStepMicroseconds_);
   figures.drift = settled ? drift_ : notMeasured;

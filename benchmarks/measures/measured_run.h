@@ -35,6 +35,9 @@ struct RunFigures {
   /// b2World::Step alone (Box2dSimulation::engineStepMicroseconds), so its cost is not inflated
   /// by the adapter that converts its bodies and contacts into ours.
   double medianMicroseconds = 0.0;
+  /// µs per step, the mean over the same steps: what a whole run costs a step. A method whose
+  /// steps differ in cost (sequential impulses sweep until converged) has a mean above its median.
+  double meanMicroseconds = 0.0;
   /// µs per step of the whole Simulation::step() call, adapter included; for our own methods
   /// the same as medianMicroseconds.
   double medianWholeStepMicroseconds = 0.0;
