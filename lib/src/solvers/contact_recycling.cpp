@@ -53,25 +53,23 @@ const FoundManifold* ContactRecycling::recordOf(const Manifold& previous,
 // centre has moved less than the recycle distance in A's frame (plus what the pair's relative turn
 // moves a point at the farther-reaching dynamic body's largest extent), the manifold is kept with
 // its normal, ids, impulses and arms as found; only each point's overlap follows how far the
-// bodies moved since, the arms turned with them (a circle's not, with roundSurfaces), as the
-// substeps measure it. A normal that runs to a circle's centre turns as the bodies move past each
-// other, so such manifolds may be found anew every step (RecyclingRule::Refined; v3 keeps them).
+// bodies moved since, the arms turned with them, as the substeps measure it. With roundSurfaces a
+// circle's arm does not turn: its contact follows its centre, so its turn counts for nothing, and
+// its surface anchor (which the position pass reads) is put back where the kept normal meets its
+// surface. A normal that runs to a circle's centre turns as the bodies move past each other, so
+// such manifolds may be found anew every step (RecyclingRule::Refined; v3 keeps them).
 bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& bodies,
                             Manifold& kept) {
   const FoundManifold* found = recordOf(previous, bodies);
   if (!found || !mayKeep(previous, bodies)) return false;
   const Body& a = bodies[previous.bodyA];
   const Body& b = bodies[previous.bodyB];
-  const Mat2 turnA = turnSinceFound(a, found->pose.rotationA);
-  const Mat2 turnB = turnSinceFound(b, found->pose.rotationB);
-  if (!movedLittle(*found, previous, a, b, turnB * turnA.transpose())) return false;
+  const Mat2 turnOfA =
+      armTurns(a) ? turnSinceFound(a, found->pose.rotationA) : Mat2(Mat2::Identity());
+  const Mat2 turnOfB =
+      armTurns(b) ? turnSinceFound(b, found->pose.rotationB) : Mat2(Mat2::Identity());
+  if (!movedLittle(*found, previous, a, b, turnOfB * turnOfA.transpose())) return false;
   kept = previous;
-  const bool roundSurfaces = roundSurfaces_;
-  const auto armTurn = [roundSurfaces](const Body& body, const Mat2& turn) {
-    return !roundSurfaces || surfaceTurnsWithShape(body.shape) ? turn : Mat2::Identity();
-  };
-  const Mat2 turnOfA = armTurn(a, turnA);
-  const Mat2 turnOfB = armTurn(b, turnB);
   for (int i = 0; i < kept.pointCount; ++i) {
     ContactPoint& point = kept.points[i];
     const FoundPoint& foundPoint = found->points[i];
@@ -80,9 +78,15 @@ bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& b
     point.penetration = foundPoint.penetration - (onB - onA).dot(kept.normal);
     point.point = contactPointBetween(onA, onB);
     point.carried = true;
+    if (!armTurns(a)) point.anchorA = a.toLocal(a.position + a.shape.radius * kept.normal);
+    if (!armTurns(b)) point.anchorB = b.toLocal(b.position - b.shape.radius * kept.normal);
   }
   records_.push_back(*found);
   return true;
+}
+
+bool ContactRecycling::armTurns(const Body& body) const {
+  return !roundSurfaces_ || surfaceTurnsWithShape(body.shape);
 }
 
 bool ContactRecycling::mayKeep(const Manifold& manifold, const std::vector<Body>& bodies) const {
@@ -96,11 +100,11 @@ bool ContactRecycling::mayKeep(const Manifold& manifold, const std::vector<Body>
 }
 
 // Each body's turn since the manifold was found is taken once, by keep, for this test and for the
-// arms; `relativeTurn` is B's turn relative to A's.
+// arms; `relativeTurn` is B's turn relative to A's, each counted only where its arm turns.
 bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& previous,
                                    const Body& a, const Body& b, const Mat2& relativeTurn) const {
-  const double turnA = a.angle - found.pose.angleA;
-  const double turnB = b.angle - found.pose.angleB;
+  const double turnA = armTurns(a) ? a.angle - found.pose.angleA : 0.0;
+  const double turnB = armTurns(b) ? b.angle - found.pose.angleB : 0.0;
   const double largestTurn = settings_.largestTurn;
   if (std::abs(turnA) > largestTurn || std::abs(turnB) > largestTurn) return false;
   const double sineOfRelativeTurn = relativeTurn(1, 0);

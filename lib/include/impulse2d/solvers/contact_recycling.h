@@ -66,6 +66,8 @@ class ContactRecycling : public ManifoldKeeping {
   const FoundManifold* foundManifold(const Manifold& manifold, std::size_t& from) const;
 
  private:
+  /// Whether the body's arms turn with it: every body's, except a circle's with roundSurfaces.
+  bool armTurns(const Body& body) const;
   /// Whether our rules beyond v3's apply (RecyclingRule::Refined).
   bool refined() const { return settings_.rule == RecyclingRule::Refined; }
   /// The record of `previous`, found in the last substep's records; the records passed on the way
