@@ -14,6 +14,9 @@ namespace {
 
 /// Path coordinates are written in hundredths of a pixel, as integers.
 constexpr double kSteps = 100.0;
+/// A mark's outlines are written in pieces of this many, each parsed once for as long as it
+/// comes again from frame to frame (mark_encoding.h).
+constexpr std::size_t kOutlinesPerPiece = 16;
 /// The most characters a coordinate and a command letter take: " -9223372036854775808" (the
 /// most hundredths there are) with a point, and a letter.
 constexpr std::size_t kMostPerNumber = 24;
@@ -117,8 +120,11 @@ void appendOutlines(EncodedMarks& encoded, const render::Mark& mark, std::size_t
   const std::size_t start = encoded.paths.size();
   {
     PathWriter out(encoded.paths);
+    std::size_t written = 0;
     for (const render::Outline& outline : mark.outlines) {
       if (outline.points.empty()) continue;
+      if (written > 0 && written % kOutlinesPerPiece == 0) out.letter(';');
+      ++written;
       if (outline.radius > 0.0) {
         writeCircle(out, outline.points.front(), outline.radius);
       } else {

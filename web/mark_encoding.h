@@ -17,7 +17,10 @@ struct EncodedMarks {
   /// Translate and Clip the offset or size (x, y); nothing more for Save and Restore.
   std::vector<double> numbers;
   /// The path data of each Fill and Stroke, in order, each followed by '|'; "=" where it is the
-  /// last one's again (a contact point's dots, filled and then outlined), parsed once.
+  /// last one's again (a contact point's dots, filled and then outlined), parsed once. Within a
+  /// mark, ';' ends each piece of 16 outlines: a piece that comes again in the next frame (most
+  /// of a pyramid's bodies and contact points, settled to the hundredth of a pixel) is not parsed
+  /// again.
   std::string paths;
   /// The text of each Text mark, in order.
   std::vector<std::string> texts;

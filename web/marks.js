@@ -16,19 +16,26 @@ const fontOf = (size) => {
 /// or stroke is one Path2D made from its SVG path data (a Path2D built call by call, or a path
 /// per outline, costs several times as much for a pyramid's thousands of outlines).
 const pathText = new TextDecoder();
-// The paths of the last frame painted, by their path data: bodies at rest keep theirs from frame
-// to frame. A path repeated at once (a contact point's dots, filled and then outlined) comes as
-// "=" and is the last one again.
-let parsed = new Map();
+// Per canvas, the paths of the pieces of path data in the last frame painted there, by their path
+// data: the pieces of bodies and contact points that did not move keep theirs from frame to frame,
+// and a mark's path is its pieces' paths added together. A path repeated at once (a contact
+// point's dots, filled and then outlined) comes as "=" and is the last one again.
+const parsedOn = new WeakMap();
 function paintMarks(context, marks) {
   const n = marks.numbers, paths = pathText.decode(marks.paths).split("|");
-  const kept = parsed;
-  parsed = new Map();
+  const kept = parsedOn.get(context) || new Map(), parsed = new Map();
+  parsedOn.set(context, parsed);
+  const pieceOf = (data) => {
+    const path = parsed.get(data) || kept.get(data) || new Path2D(data);
+    parsed.set(data, path);
+    return path;
+  };
   let last = null;
   const pathOf = (data) => {
     if (data === "=") return last;
-    last = parsed.get(data) || kept.get(data) || new Path2D(data);
-    parsed.set(data, last);
+    if (!data.includes(";")) return (last = pieceOf(data));
+    last = new Path2D();
+    for (const piece of data.split(";")) last.addPath(pieceOf(piece));
     return last;
   };
   let i = 0, path = 0, text = 0;
