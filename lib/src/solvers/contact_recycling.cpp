@@ -54,10 +54,10 @@ const FoundManifold* ContactRecycling::recordOf(const Manifold& previous,
 // moves a point at the farther-reaching dynamic body's largest extent), the manifold is kept with
 // its normal, ids, impulses and arms as found; only each point's overlap follows how far the
 // bodies moved since, the arms turned with them, as the substeps measure it. With roundSurfaces a
-// circle's arm does not turn: its contact follows its centre, so its turn counts for nothing, and
-// its surface anchor (which the position pass reads) is put back where the kept normal meets its
-// surface. A normal that runs to a circle's centre turns as the bodies move past each other, so
-// such manifolds may be found anew every step (RecyclingRule::Refined; v3 keeps them).
+// circle's arm does not turn: its contact follows its centre, and its surface anchor (which the
+// position pass reads) is put back where the kept normal meets its surface. A normal that runs to
+// a circle's centre turns as the bodies move past each other, so such manifolds may be found anew
+// every step (RecyclingRule::Refined; v3 keeps them).
 bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& bodies,
                             Manifold& kept) {
   const FoundManifold* found = recordOf(previous, bodies);
@@ -68,7 +68,7 @@ bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& b
       armTurns(a) ? turnSinceFound(a, found->pose.rotationA) : Mat2(Mat2::Identity());
   const Mat2 turnOfB =
       armTurns(b) ? turnSinceFound(b, found->pose.rotationB) : Mat2(Mat2::Identity());
-  if (!movedLittle(*found, previous, a, b, turnOfB * turnOfA.transpose())) return false;
+  if (!movedLittle(*found, previous, a, b)) return false;
   kept = previous;
   for (int i = 0; i < kept.pointCount; ++i) {
     ContactPoint& point = kept.points[i];
@@ -99,17 +99,19 @@ bool ContactRecycling::mayKeep(const Manifold& manifold, const std::vector<Body>
   return !refined() || !normalRunsToCentre(a, b, manifold);
 }
 
-// Each body's turn since the manifold was found is taken once, by keep, for this test and for the
-// arms; `relativeTurn` is B's turn relative to A's, each counted only where its arm turns.
+// The turns are taken from the angles, not the rotations: a rotation is the cos and sin of the
+// angle, which C libraries round differently in the last bit, and a keep decision that read them
+// would go otherwise in the browser than in i2d. A circle's turn counts too, though its arm does
+// not turn: kept while it spins, a heap of discs settled worse (docs/design/
+// sequential-impulses-speed.md). The relative turn θ moves a point at the reach by at most
+// reach·|θ|.
 bool ContactRecycling::movedLittle(const FoundManifold& found, const Manifold& previous,
-                                   const Body& a, const Body& b, const Mat2& relativeTurn) const {
-  const double turnA = armTurns(a) ? a.angle - found.pose.angleA : 0.0;
-  const double turnB = armTurns(b) ? b.angle - found.pose.angleB : 0.0;
+                                   const Body& a, const Body& b) const {
+  const double turnA = a.angle - found.pose.angleA;
+  const double turnB = b.angle - found.pose.angleB;
   const double largestTurn = settings_.largestTurn;
   if (std::abs(turnA) > largestTurn || std::abs(turnB) > largestTurn) return false;
-  const double sineOfRelativeTurn = relativeTurn(1, 0);
-  const double moved =
-      offsetMoved(a, b, found.pose) + found.pose.reach * std::abs(sineOfRelativeTurn);
+  const double moved = offsetMoved(a, b, found.pose) + found.pose.reach * std::abs(turnB - turnA);
   return moved < recycleDistance(found, previous);
 }
 

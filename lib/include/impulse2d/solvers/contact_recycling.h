@@ -74,7 +74,7 @@ class ContactRecycling : public ManifoldKeeping {
   /// that the world keeps (their bodies all sleep) are carried over as they are.
   const FoundManifold* recordOf(const Manifold& previous, const std::vector<Body>& bodies);
   bool movedLittle(const FoundManifold& found, const Manifold& previous, const Body& a,
-                   const Body& b, const Mat2& relativeTurn) const;
+                   const Body& b) const;
   double recycleDistance(const FoundManifold& found, const Manifold& previous) const;
   double offsetMoved(const Body& a, const Body& b, const FoundPose& found) const;
 
