@@ -64,11 +64,11 @@ bool ContactRecycling::keep(const Manifold& previous, const std::vector<Body>& b
   if (!found || !mayKeep(previous, bodies)) return false;
   const Body& a = bodies[previous.bodyA];
   const Body& b = bodies[previous.bodyB];
+  if (!movedLittle(*found, previous, a, b)) return false;
   const Mat2 turnOfA =
       armTurns(a) ? turnSinceFound(a, found->pose.rotationA) : Mat2(Mat2::Identity());
   const Mat2 turnOfB =
       armTurns(b) ? turnSinceFound(b, found->pose.rotationB) : Mat2(Mat2::Identity());
-  if (!movedLittle(*found, previous, a, b)) return false;
   kept = previous;
   for (int i = 0; i < kept.pointCount; ++i) {
     ContactPoint& point = kept.points[i];
