@@ -52,7 +52,8 @@ class ContactRecycling : public ManifoldKeeping {
       : settings_(settings), roundSurfaces_(roundSurfaces) {}
 
   void startFinding() override;
-  /// Keeps `previous` while its bodies have moved little since it was found (docs/contact-generation.md).
+  /// Keeps `previous` while its bodies have moved little since it was found
+  /// (docs/contact-generation.md).
   bool keep(const Manifold& previous, const std::vector<Body>& bodies, Manifold& kept) override;
   void found(const Manifold& manifold, const std::vector<Body>& bodies, double distance) override;
 
