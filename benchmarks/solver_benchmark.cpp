@@ -21,8 +21,9 @@
 //                                preparing, solving velocities, solving positions and the rest:
 //                                a Markdown table, and CSV for docs/charts/cost_split.gp
 //   solver_benchmark --sweeps SCENE  sequential impulses stopping once converged, capped at 40,
-//                                160 and 640 sweeps: the mean sweeps per step in each second
-//                                of the run, and how many steps reach the cap
+//                                160 and 640 sweeps, on runs as long as --speed's: the mean
+//                                sweeps per step in each second of the run, and how many steps
+//                                reach the cap; then each run's settled drift beside Box2D's
 //   solver_benchmark --callgrind SCENE SOLVER ITERATIONS WARMUP STEPS
 //                                runs WARMUP steps of the shipped SCENE with SOLVER at ITERATIONS
 //                                (0: its default), then STEPS steps inside measuredSteps(), for
@@ -33,6 +34,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -628,48 +630,80 @@ int printCostSplit(bool quick, const std::string& csvPath) {
 /// The caps of --sweeps: the default, and four and sixteen times it.
 const std::vector<int> kSweepCaps = {40, 160, 640};
 
-/// Sweeps made in each step of the scene by sequential impulses at their defaults but for the
-/// cap (the convergence test kept).
-std::vector<int> sweepsPerStep(const std::string& sceneName, int cap) {
-  Scene scene = withMethod(shippedScene(sceneName), "sequential", 0);
-  applySetting(scene, "solver." + iterationKey("sequential") + "=" + std::to_string(cap));
-  std::unique_ptr<Simulation> simulation = makeSimulation(scene);
-  World& world = dynamic_cast<World&>(*simulation);
+/// A run of sequential impulses at their defaults but for the cap (the convergence test kept):
+/// the sweeps each step made, and the run's figures.
+struct CappedRun {
   std::vector<int> sweeps;
-  for (long step = 0; step < scene.steps; ++step) {
-    simulation->step();
-    sweeps.push_back(world.solver().lastReport().iterations);
+  RunFigures figures;
+};
+
+/// The length of --sweeps' runs: that of the speed targets where the scene has one, so the
+/// figures are those of the runs --speed times.
+long sweepRunSteps(const Scene& scene) {
+  const long steps = speedTargetOf(scene.name).steps;
+  return steps > 0 ? steps : scene.steps;
+}
+
+CappedRun runCapped(const std::string& sceneName, const std::string& solver, int cap) {
+  Scene scene = withMethod(shippedScene(sceneName), solver, solver == "box2d" ? 8 : 0);
+  if (solver == "sequential") {
+    applySetting(scene, "solver." + iterationKey(solver) + "=" + std::to_string(cap));
   }
-  return sweeps;
+  RunPlan plan;
+  plan.steps = sweepRunSteps(scene);
+  plan.settledTime = settledTime(scene);
+  MeasuredRun run(scene, plan);
+  const auto* world = dynamic_cast<const World*>(&run.simulation());
+  CappedRun capped;
+  while (!run.done()) {
+    run.step();
+    capped.sweeps.push_back(world ? world->solver().lastReport().iterations : cap);
+  }
+  capped.figures = run.figures();
+  return capped;
 }
 
 /// How many sweeps the scene's steps need: per second of the run, the mean sweeps per step and
-/// the steps that reach the cap, for each cap of kSweepCaps.
+/// the steps that reach the cap, for each cap of kSweepCaps; then each whole run's mean sweeps,
+/// settled drift and deepest contact, beside Box2D 2.4.1's (8+3) on the same steps.
 int printSweepsPerStep(const std::string& sceneName) {
   const Scene scene = shippedScene(sceneName);
   const long stepsPerSecond = std::lround(1.0 / scene.world.dt);
-  std::vector<std::vector<int>> runs;
-  for (int cap : kSweepCaps) runs.push_back(sweepsPerStep(sceneName, cap));
+  std::vector<CappedRun> runs;
+  for (int cap : kSweepCaps) runs.push_back(runCapped(sceneName, "sequential", cap));
+  const long steps = static_cast<long>(runs[0].sweeps.size());
   std::printf("| %s, seconds |", sceneName.c_str());
   for (int cap : kSweepCaps) std::printf(" cap %d: mean sweeps, steps at the cap |", cap);
   std::printf("\n| --- |");
   for (size_t i = 0; i < kSweepCaps.size(); ++i) std::printf(" --- |");
   std::printf("\n");
-  for (long first = 0; first < scene.steps; first += stepsPerSecond) {
-    const long last = std::min<long>(first + stepsPerSecond, scene.steps);
+  for (long first = 0; first < steps; first += stepsPerSecond) {
+    const long last = std::min<long>(first + stepsPerSecond, steps);
     std::printf("| %.0f–%.0f |", first * scene.world.dt, last * scene.world.dt);
     for (size_t c = 0; c < kSweepCaps.size(); ++c) {
       long total = 0;
       long atCap = 0;
       for (long step = first; step < last; ++step) {
-        total += runs[c][step];
-        atCap += runs[c][step] >= kSweepCaps[c];
+        total += runs[c].sweeps[step];
+        atCap += runs[c].sweeps[step] >= kSweepCaps[c];
       }
       std::printf(" %.1f, %ld of %ld |", static_cast<double>(total) / (last - first), atCap,
                   last - first);
     }
     std::printf("\n");
   }
+  const RunFigures box2d = runCapped(sceneName, "box2d", 8).figures;
+  std::printf(
+      "\n| %s, %ld steps, settled from %.0f s | mean sweeps | settled drift m | deepest "
+      "contact m |\n| --- | --- | --- | --- |\n",
+      sceneName.c_str(), steps, settledTime(scene));
+  for (size_t c = 0; c < kSweepCaps.size(); ++c) {
+    const std::vector<int>& sweeps = runs[c].sweeps;
+    const double mean = std::accumulate(sweeps.begin(), sweeps.end(), 0.0) / sweeps.size();
+    std::printf("| sequential, cap %d | %.1f | %.2e | %.2e |\n", kSweepCaps[c], mean,
+                runs[c].figures.drift, runs[c].figures.largestPenetration);
+  }
+  std::printf("| Box2D 2.4.1, 8+3 | 8 | %.2e | %.2e |\n", box2d.drift, box2d.largestPenetration);
   return 0;
 }
 
