@@ -78,6 +78,7 @@ class World : public Simulation {
 
   /// the contact method
   ContactSolver& solver() { return *solver_; }
+  /// the contact method, to read its last report
   const ContactSolver& solver() const { return *solver_; }
   /// what the last step did
   const StepStatistics& lastStepStatistics() const { return statistics_; }
