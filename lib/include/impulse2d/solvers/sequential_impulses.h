@@ -28,7 +28,7 @@ class SequentialImpulseSolver : public ContactSolver {
  public:
   /// A solver with these settings.
   explicit SequentialImpulseSolver(const SequentialImpulseSettings& settings)
-      : settings_(settings), recycling_(settings.recycling, true) {}
+      : settings_(settings), recycling_(settings.recycling, kDiscArmsStayAsFound) {}
 
   std::string name() const override { return "sequential"; }
   /// Finds the contacts, integrates the velocities, sweeps them, moves the bodies, runs the
@@ -160,6 +160,10 @@ class SequentialImpulseSolver : public ContactSolver {
   void storeResults(const StepContext& context) const;
   void reportPoints(const StepContext& context, const ManifoldState& manifold, int sweep,
                     const std::array<PointImpulse, 2>& impulses, SolverEvent::Phase phase) const;
+
+  /// A kept manifold's arm on a disc stays where it was found while the disc rolls (the
+  /// recycling's roundSurfaces): turned with the disc, three piled discs crept 2.2 mm in 2.5 s.
+  static constexpr bool kDiscArmsStayAsFound = true;
 
   SequentialImpulseSettings settings_;
   ContactRecycling recycling_;  ///< which manifolds are kept across steps (settings' recycling)
